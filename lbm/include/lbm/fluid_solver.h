@@ -1,0 +1,100 @@
+#pragma once
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "lbm/block_layout.h"
+#include "lbm/decomposition.h"
+#include "lbm/node_type.h"
+#include "lbm/population_field.h"
+#include "lbm/trt.h"
+#include "lbm/voxel_geometry.h"
+
+namespace lbm {
+
+class HaloExchange;
+
+struct FluidParameters {
+  double tau = 1.0;                 // relaxation time (lattice units); nu = (tau - 1/2)/3
+  double magic = 3.0 / 16.0;        // TRT magic parameter Lambda
+  double rho0 = 1.0;                // initial / reference density
+  std::array<double, 3> body_force{0.0, 0.0, 0.0};  // force per unit volume (lattice units)
+  std::array<bool, 3> periodic{false, false, false};
+};
+
+// How the flow is driven through the domain along +axis: the inlet is the face at the
+// global lower bound of `axis`, the outlet the face at the upper bound (both on-site,
+// Hecht & Harting 2010 for D3Q19). With kNone those faces follow `periodic` / walls.
+struct FlowDrive {
+  enum Kind { kNone, kInletVelocity, kPressureLoss } kind = kNone;
+  int axis = 0;
+  double inlet_velocity = 0.0;  // normal velocity at the inlet (kInletVelocity)
+  double pressure_loss = 0.0;   // p_in - p_out in lattice units (kPressureLoss)
+  double outlet_density = 1.0;  // density imposed at the outlet (both kinds)
+};
+
+// One rank's share of the fluid. A step is a named pipeline of stages so that coupling/
+// can insert its moving-boundary stages between them:
+//   exchange_halo -> apply_wall_bounce_back -> [moving boundaries] -> apply_open_boundaries
+//   -> collide_stream (and swap).
+// State between steps: post-collision populations f*(x, t) in populations().
+class FluidSolver {
+ public:
+  FluidSolver(const VoxelGeometry& geometry, const FluidParameters& parameters,
+              const FlowDrive& drive, const Decomposition& decomposition);
+  ~FluidSolver();
+  FluidSolver(const FluidSolver&) = delete;
+  FluidSolver& operator=(const FluidSolver&) = delete;
+
+  // All stages in order.
+  void step();
+  void exchange_halo();
+  void apply_wall_bounce_back();
+  void apply_open_boundaries();
+  void collide_stream();
+
+  // Reset every fluid node to equilibrium at density rho and velocity u.
+  void initialise_equilibrium(double rho, const std::array<double, 3>& u);
+
+  const BlockLayout& layout() const { return layout_; }
+  const Decomposition& decomposition() const { return decomposition_; }
+  const FluidParameters& parameters() const { return parameters_; }
+  const FlowDrive& drive() const { return drive_; }
+  const TrtParameters& trt() const { return trt_; }
+  const VoxelGeometry& geometry() const { return geometry_; }
+  PopulationField& populations() { return f_; }
+  const PopulationField& populations() const { return f_; }
+  std::vector<std::uint8_t>& node_types() { return node_type_; }
+  const std::vector<std::uint8_t>& node_types() const { return node_type_; }
+  long long time_step() const { return time_step_; }
+  void set_time_step(long long t) { time_step_ = t; }
+  // Changes the drive between steps (e.g. a pressure ramp).
+  void set_drive(const FlowDrive& drive);
+
+  // Macroscopic values at a local cell, from the stored post-collision populations:
+  // rho = sum f, rho u = sum c f - F/2 (the Guo forcing shift undone).
+  double density(std::size_t cell) const;
+  std::array<double, 3> velocity(std::size_t cell) const;
+
+ private:
+  void build_node_types();
+  void build_wall_links();
+
+  VoxelGeometry geometry_;
+  FluidParameters parameters_;
+  FlowDrive drive_;
+  Decomposition decomposition_;
+  TrtParameters trt_;
+  BlockLayout layout_;
+  PopulationField f_, f_next_;
+  std::vector<std::uint8_t> node_type_;
+  // Half-way bounce-back on static walls: wall_slot_[n] (index into the population
+  // array, a slot at a solid cell) receives the value at wall_source_[n] (the opposite
+  // population of the fluid node the link leaves).
+  std::vector<std::size_t> wall_slot_, wall_source_;
+  std::unique_ptr<HaloExchange> halo_;
+  long long time_step_ = 0;
+};
+
+}  // namespace lbm

@@ -1,0 +1,28 @@
+#pragma once
+#include <vector>
+
+#include "lbm/decomposition.h"
+#include "lbm/population_field.h"
+
+namespace lbm {
+
+// Fills the ghost layer of a PopulationField from the face neighbours (or from the
+// opposite side of this block for a periodic axis owned by this rank alone). Three sweeps,
+// x then y then z, each sending the full padded extent of the other axes, so edge ghosts
+// arrive too with only six messages. Ghosts at non-periodic domain edges are left alone
+// (boundary conditions own them). Buffers are allocated once.
+class HaloExchange {
+ public:
+  HaloExchange(const Decomposition& decomposition, const BlockLayout& layout);
+  void exchange(PopulationField& field);
+  // Same for one scalar value per cell (e.g. particle ids on the lattice); doubles.
+  void exchange_scalar(std::vector<double>& values);
+
+ private:
+  const Decomposition* decomposition_;
+  BlockLayout layout_;
+  std::vector<double> send_low_, send_high_, recv_low_, recv_high_;
+  void sweep(int axis, int components, std::vector<double*>& arrays_by_component);
+};
+
+}  // namespace lbm

@@ -1,0 +1,29 @@
+#pragma once
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "lbm/block_layout.h"
+#include "lbm/population_field.h"
+
+namespace lbm {
+
+// On-site open boundary on a face normal to an axis (Zou & He 1997, extended to D3Q19 with
+// the transverse-momentum correction of Hecht & Harting 2010, J. Stat. Mech. P01018).
+// After streaming, a boundary node lacks the populations that would come from outside;
+// we compute them from the known ones and write them into the ghost slots they are pulled
+// from, so the fused kernel needs no special case.
+struct OpenFace {
+  int axis = 0;
+  int inward = +1;         // +1: face at the lower bound (inlet), -1: upper bound (outlet)
+  int local_plane = 0;     // local index of the boundary nodes along axis
+  enum Kind { kVelocity, kDensity } kind = kVelocity;
+  double value = 0.0;      // normal velocity along +axis (kVelocity) or density (kDensity)
+};
+
+// Applies one face to the owned fluid nodes of the block lying on it. The tangential
+// velocity is set to zero.
+void apply_open_face(const OpenFace& face, const BlockLayout& layout,
+                     const std::vector<std::uint8_t>& node_type, PopulationField& f);
+
+}  // namespace lbm

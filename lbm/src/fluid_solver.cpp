@@ -1,0 +1,198 @@
+#include "lbm/fluid_solver.h"
+
+#include <cmath>
+#include <string>
+#include <utility>
+
+#include "lbm/collide_stream.h"
+#include "lbm/d3q19.h"
+#include "lbm/halo_exchange.h"
+#include "lbm/input_error.h"
+#include "lbm/open_boundary.h"
+
+namespace lbm {
+
+namespace {
+void validate(const VoxelGeometry& geometry, const FlowDrive& drive, const Decomposition& d) {
+  for (int a = 0; a < 3; ++a)
+    if (d.global.lo[a] != 0 || d.global.hi[a] != geometry.dims()[a])
+      throw InputError("fluid solver: the decomposition's global box does not match the voxel "
+                       "geometry's dimensions on axis " + std::to_string(a));
+  if (drive.axis < 0 || drive.axis > 2)
+    throw InputError("flow drive: axis = " + std::to_string(drive.axis) + ", must be 0, 1 or 2");
+  if (drive.kind != FlowDrive::kNone && d.periodic[drive.axis])
+    throw InputError("flow drive: the drive axis cannot also be periodic");
+  if (drive.kind == FlowDrive::kInletVelocity && !(std::abs(drive.inlet_velocity) < 0.3))
+    throw InputError("flow drive: inlet velocity = " + std::to_string(drive.inlet_velocity) +
+                     " lattice units, must be in (-0.3, 0.3) (lattice Mach number < 0.5)");
+  if (!(drive.outlet_density > 0.0))
+    throw InputError("flow drive: outlet density must be > 0");
+  if (drive.kind == FlowDrive::kPressureLoss &&
+      !(std::abs(drive.pressure_loss) < 0.3 * drive.outlet_density))
+    throw InputError("flow drive: pressure loss = " + std::to_string(drive.pressure_loss) +
+                     " lattice units, must be below 0.3 rho_out (density variation < 90 %)");
+}
+}  // namespace
+
+FluidSolver::FluidSolver(const VoxelGeometry& geometry, const FluidParameters& parameters,
+                         const FlowDrive& drive, const Decomposition& decomposition)
+    : geometry_(geometry),
+      parameters_(parameters),
+      drive_(drive),
+      decomposition_(decomposition),
+      trt_(TrtParameters::from_tau(parameters.tau, parameters.magic)),
+      layout_(decomposition.owned) {
+  decomposition_.periodic = parameters.periodic;
+  validate(geometry_, drive_, decomposition_);
+  f_ = PopulationField(layout_);
+  f_next_ = PopulationField(layout_);
+  halo_ = std::make_unique<HaloExchange>(decomposition_, layout_);
+  build_node_types();
+  build_wall_links();
+  initialise_equilibrium(parameters_.rho0, {0.0, 0.0, 0.0});
+}
+
+FluidSolver::~FluidSolver() = default;
+
+void FluidSolver::set_drive(const FlowDrive& drive) {
+  if (drive.axis != drive_.axis || (drive.kind == FlowDrive::kNone) != (drive_.kind == FlowDrive::kNone))
+    throw InputError("flow drive: only the drive values can change during a run, not its axis or kind");
+  validate(geometry_, drive, decomposition_);
+  drive_ = drive;
+}
+
+// Node types of owned and ghost cells from the global geometry. Ghosts beyond the domain
+// are: periodic images, open (inlet/outlet ghosts of the drive axis), or closed walls.
+void FluidSolver::build_node_types() {
+  node_type_.assign(layout_.num_cells(), kFluid);
+  const Box& global = decomposition_.global;
+  for (int k = -1; k <= layout_.size(2); ++k)
+    for (int j = -1; j <= layout_.size(1); ++j)
+      for (int i = -1; i <= layout_.size(0); ++i) {
+        std::array<int, 3> g = layout_.to_global(i, j, k);
+        std::uint8_t type = kFluid;
+        for (int a = 0; a < 3 && type == kFluid; ++a) {
+          if (g[a] >= global.lo[a] && g[a] < global.hi[a]) continue;
+          if (drive_.kind != FlowDrive::kNone && a == drive_.axis)
+            type = kOpen;
+          else if (decomposition_.periodic[a])
+            g[a] = (g[a] - global.lo[a] + global.size(a)) % global.size(a) + global.lo[a];
+          else
+            type = kSolid;
+        }
+        if (type == kFluid && geometry_.is_solid(g[0], g[1], g[2])) type = kSolid;
+        node_type_[layout_.cell(i, j, k)] = type;
+      }
+}
+
+void FluidSolver::build_wall_links() {
+  wall_slot_.clear();
+  wall_source_.clear();
+  const std::size_t n = layout_.num_cells();
+  for (int k = 0; k < layout_.size(2); ++k)
+    for (int j = 0; j < layout_.size(1); ++j)
+      for (int i = 0; i < layout_.size(0); ++i) {
+        const std::size_t x = layout_.cell(i, j, k);
+        if (node_type_[x] != kFluid) continue;
+        for (int q = 1; q < D3Q19::Q; ++q) {
+          const std::size_t y =
+              x - layout_.offset(D3Q19::c[q][0], D3Q19::c[q][1], D3Q19::c[q][2]);
+          if (node_type_[y] != kSolid) continue;
+          wall_slot_.push_back(q * n + y);
+          wall_source_.push_back(D3Q19::opposite(q) * n + x);
+        }
+      }
+}
+
+void FluidSolver::initialise_equilibrium(double rho, const std::array<double, 3>& u) {
+  const std::size_t n = layout_.num_cells();
+  for (std::size_t cell = 0; cell < n; ++cell) {
+    const bool fluid = node_type_[cell] == kFluid;
+    for (int q = 0; q < D3Q19::Q; ++q)
+      f_.at(q, cell) = fluid ? static_cast<Real>(equilibrium(q, rho, u)) : Real(0);
+  }
+}
+
+void FluidSolver::exchange_halo() { halo_->exchange(f_); }
+
+// Half-way bounce-back (Ladd 1994): the population leaving fluid node x towards a wall
+// returns to x reversed one step later, f_q(x, t+1) = f*_{-q}(x, t).
+void FluidSolver::apply_wall_bounce_back() {
+  Real* data = f_.raw().data();
+  const std::size_t links = wall_slot_.size();
+  for (std::size_t l = 0; l < links; ++l) data[wall_slot_[l]] = data[wall_source_[l]];
+}
+
+void FluidSolver::apply_open_boundaries() {
+  if (drive_.kind == FlowDrive::kNone) return;
+  const int a = drive_.axis;
+  const Box& global = decomposition_.global;
+  const Box& owned = decomposition_.owned;
+  if (owned.lo[a] == global.lo[a]) {
+    OpenFace inlet;
+    inlet.axis = a;
+    inlet.inward = +1;
+    inlet.local_plane = 0;
+    if (drive_.kind == FlowDrive::kInletVelocity) {
+      inlet.kind = OpenFace::kVelocity;
+      inlet.value = drive_.inlet_velocity;
+    } else {
+      // p = cs^2 rho, so a pressure loss dp needs rho_in = rho_out + dp / cs^2.
+      inlet.kind = OpenFace::kDensity;
+      inlet.value = drive_.outlet_density + drive_.pressure_loss / D3Q19::cs2;
+    }
+    apply_open_face(inlet, layout_, node_type_, f_);
+  }
+  if (owned.hi[a] == global.hi[a]) {
+    OpenFace outlet;
+    outlet.axis = a;
+    outlet.inward = -1;
+    outlet.local_plane = layout_.size(a) - 1;
+    outlet.kind = OpenFace::kDensity;
+    outlet.value = drive_.outlet_density;
+    apply_open_face(outlet, layout_, node_type_, f_);
+  }
+}
+
+void FluidSolver::collide_stream() {
+  CollideStreamArgs args;
+  args.src = f_.raw().data();
+  args.dst = f_next_.raw().data();
+  args.node_type = node_type_.data();
+  args.layout = layout_;
+  args.omega_plus = trt_.omega_plus;
+  args.omega_minus = trt_.omega_minus;
+  args.force = parameters_.body_force;
+  lbm::collide_stream(args);
+  std::swap(f_, f_next_);
+  ++time_step_;
+}
+
+void FluidSolver::step() {
+  exchange_halo();
+  apply_wall_bounce_back();
+  apply_open_boundaries();
+  collide_stream();
+}
+
+double FluidSolver::density(std::size_t cell) const {
+  double rho = 0.0;
+  for (int q = 0; q < D3Q19::Q; ++q) rho += f_.at(q, cell);
+  return rho;
+}
+
+std::array<double, 3> FluidSolver::velocity(std::size_t cell) const {
+  double j[3] = {0.0, 0.0, 0.0};
+  double rho = 0.0;
+  for (int q = 0; q < D3Q19::Q; ++q) {
+    const double v = f_.at(q, cell);
+    rho += v;
+    for (int a = 0; a < 3; ++a) j[a] += v * D3Q19::c[q][a];
+  }
+  if (rho <= 0.0) return {0.0, 0.0, 0.0};
+  const auto& F = parameters_.body_force;
+  // Post-collision momentum = rho u + F/2 with Guo forcing (see collide_stream.cpp).
+  return {(j[0] - 0.5 * F[0]) / rho, (j[1] - 0.5 * F[1]) / rho, (j[2] - 0.5 * F[2]) / rho};
+}
+
+}  // namespace lbm

@@ -1,0 +1,84 @@
+#include "lbm/macroscopic.h"
+
+#include "lbm/d3q19.h"
+#include "lbm/node_type.h"
+
+namespace lbm {
+
+MacroscopicFields compute_fields(const FluidSolver& solver) {
+  const BlockLayout& g = solver.layout();
+  const std::size_t count = std::size_t(g.size(0)) * g.size(1) * g.size(2);
+  MacroscopicFields out;
+  out.density.assign(count, solver.parameters().rho0);
+  out.velocity.assign(3 * count, 0.0);
+  out.node_type.assign(count, kSolid);
+  std::size_t n = 0;
+  for (int k = 0; k < g.size(2); ++k)
+    for (int j = 0; j < g.size(1); ++j)
+      for (int i = 0; i < g.size(0); ++i, ++n) {
+        const std::size_t cell = g.cell(i, j, k);
+        out.node_type[n] = solver.node_types()[cell];
+        if (out.node_type[n] != kFluid) continue;
+        out.density[n] = solver.density(cell);
+        const auto u = solver.velocity(cell);
+        for (int a = 0; a < 3; ++a) out.velocity[3 * n + a] = u[a];
+      }
+  return out;
+}
+
+namespace {
+// Visits the owned fluid nodes of global plane `index` normal to `axis`.
+template <class Visit>
+void for_plane(const FluidSolver& solver, int axis, int index, Visit visit) {
+  const BlockLayout& g = solver.layout();
+  const int local = index - g.owned().lo[axis];
+  if (local < 0 || local >= g.size(axis)) return;
+  const int t1 = (axis + 1) % 3, t2 = (axis + 2) % 3;
+  for (int s2 = 0; s2 < g.size(t2); ++s2)
+    for (int s1 = 0; s1 < g.size(t1); ++s1) {
+      int ijk[3];
+      ijk[axis] = local;
+      ijk[t1] = s1;
+      ijk[t2] = s2;
+      const std::size_t cell = g.cell(ijk[0], ijk[1], ijk[2]);
+      if (solver.node_types()[cell] == kFluid) visit(cell);
+    }
+}
+}  // namespace
+
+double plane_flux(const FluidSolver& solver, int axis, int index) {
+  double flux = 0.0;
+  for_plane(solver, axis, index, [&](std::size_t cell) { flux += solver.velocity(cell)[axis]; });
+  return solver.decomposition().comm.sum(flux);
+}
+
+double plane_mean_pressure(const FluidSolver& solver, int axis, int index) {
+  double sums[2] = {0.0, 0.0};
+  for_plane(solver, axis, index, [&](std::size_t cell) {
+    sums[0] += solver.density(cell);
+    sums[1] += 1.0;
+  });
+  solver.decomposition().comm.sum(sums, 2);
+  return sums[1] > 0.0 ? D3Q19::cs2 * sums[0] / sums[1] : 0.0;
+}
+
+double total_mass(const FluidSolver& solver) {
+  const BlockLayout& g = solver.layout();
+  double mass = 0.0;
+  for (int k = 0; k < g.size(2); ++k)
+    for (int j = 0; j < g.size(1); ++j)
+      for (int i = 0; i < g.size(0); ++i) {
+        const std::size_t cell = g.cell(i, j, k);
+        if (solver.node_types()[cell] == kFluid) mass += solver.density(cell);
+      }
+  return solver.decomposition().comm.sum(mass);
+}
+
+double pressure_loss(const FluidSolver& solver) {
+  const int axis = solver.drive().axis;
+  const Box& global = solver.decomposition().global;
+  return plane_mean_pressure(solver, axis, global.lo[axis]) -
+         plane_mean_pressure(solver, axis, global.hi[axis] - 1);
+}
+
+}  // namespace lbm
