@@ -1,0 +1,90 @@
+// Voxel geometry, the paper's pore scene builder, and voxel files.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+
+#include "lbm/input_error.h"
+#include "lbm/pore_scene.h"
+#include "lbm/voxel_file.h"
+
+namespace {
+std::string temp_path(const std::string& name) { return ::testing::TempDir() + name; }
+
+std::string error_of(const std::string& path) {
+  try {
+    lbm::load_voxel_file(path);
+  } catch (const lbm::InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+}  // namespace
+
+TEST(PoreScene, RegionsAndPoreCrossSection) {
+  lbm::PoreSceneSpec spec;
+  spec.inlet_length = 5;
+  spec.free_length = 7;
+  spec.pore_length = 11;
+  spec.outlet_length = 3;
+  spec.width = 41;
+  spec.pore_diameter = 30.0;
+  const lbm::VoxelGeometry g = lbm::make_pore_scene(spec);
+  EXPECT_EQ(g.dims()[0], 26);
+  const auto r = lbm::regions_of(spec);
+  EXPECT_EQ(r.pore_begin, 12);
+  EXPECT_EQ(r.pore_end, 23);
+  // Open area of a pore plane against pi D^2 / 4: staircase error below 2 %.
+  int open = 0;
+  for (int k = 0; k < spec.width; ++k)
+    for (int j = 0; j < spec.width; ++j) open += !g.is_solid(r.pore_begin, j, k);
+  const double area = M_PI * 30.0 * 30.0 / 4.0;
+  EXPECT_NEAR(open / area, 1.0, 0.02);
+  // Outside the block everything is fluid; solid count = block minus pore.
+  EXPECT_FALSE(g.is_solid(r.pore_begin - 1, 0, 0));
+  EXPECT_TRUE(g.is_solid(r.pore_begin, 0, 0));
+  EXPECT_EQ(g.count_solid(), std::size_t(11) * (41 * 41 - open));
+}
+
+TEST(PoreScene, PoreWiderThanBoxIsRefused) {
+  lbm::PoreSceneSpec spec;
+  spec.width = 20;
+  spec.pore_diameter = 25;
+  try {
+    lbm::make_pore_scene(spec);
+    FAIL();
+  } catch (const lbm::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("pore_diameter"), std::string::npos);
+  }
+}
+
+TEST(VoxelFile, RawRoundTrip) {
+  lbm::PoreSceneSpec spec;
+  spec.width = 12;
+  spec.pore_diameter = 6;
+  const auto g = lbm::make_pore_scene(spec, 0.25, {1.0, 2.0, 3.0});
+  const std::string path = temp_path("scene.voxels");
+  lbm::save_voxel_file_raw(g, path);
+  const auto back = lbm::load_voxel_file(path);
+  EXPECT_EQ(back.dims(), g.dims());
+  EXPECT_DOUBLE_EQ(back.spacing(), 0.25);
+  EXPECT_DOUBLE_EQ(back.origin()[2], 3.0);
+  EXPECT_EQ(back.data(), g.data());
+}
+
+TEST(VoxelFile, BadFilesGiveClearErrors) {
+  EXPECT_NE(error_of(temp_path("missing.voxels")).find("cannot be opened"), std::string::npos);
+  const std::string bad_magic = temp_path("bad_magic.voxels");
+  std::ofstream(bad_magic) << "HELLO 1\n2 2 2\n1 0 0 0\n";
+  EXPECT_NE(error_of(bad_magic).find("LBMPORE_VOXELS"), std::string::npos);
+  const std::string bad_dims = temp_path("bad_dims.voxels");
+  std::ofstream(bad_dims) << "LBMPORE_VOXELS 1\n2 -2 2\n1 0 0 0\n";
+  EXPECT_NE(error_of(bad_dims).find("dimensions"), std::string::npos);
+  const std::string truncated = temp_path("truncated.voxels");
+  std::ofstream(truncated) << "LBMPORE_VOXELS 1\n2 2 2\n1 0 0 0\n\x01\x00\x01";
+  EXPECT_NE(error_of(truncated).find("truncated"), std::string::npos);
+  const std::string bad_spacing = temp_path("bad_spacing.voxels");
+  std::ofstream(bad_spacing) << "LBMPORE_VOXELS 1\n2 2 2\n0 0 0 0\n";
+  EXPECT_NE(error_of(bad_spacing).find("spacing"), std::string::npos);
+}
