@@ -1,0 +1,29 @@
+#include "stream_bandwidth.h"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <chrono>
+#include <vector>
+
+double measure_copy_bandwidth(int threads, std::size_t bytes_per_array) {
+  const std::size_t n = bytes_per_array / sizeof(double);
+  std::vector<double> a(n), b(n);
+  // First touch in parallel so pages sit near the threads that use them.
+#pragma omp parallel for num_threads(threads) schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    a[i] = 1.0;
+    b[i] = 0.0;
+  }
+  double best = 0.0;
+  for (int repeat = 0; repeat < 5; ++repeat) {
+    const auto start = std::chrono::steady_clock::now();
+#pragma omp parallel for num_threads(threads) schedule(static)
+    for (std::size_t i = 0; i < n; ++i) b[i] = a[i];
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    best = std::max(best, 2.0 * n * sizeof(double) / seconds);
+    std::swap(a, b);
+  }
+  return best;
+}
