@@ -113,6 +113,20 @@ void FluidSolver::initialise_equilibrium(double rho, const std::array<double, 3>
   }
 }
 
+void FluidSolver::initialise_equilibrium(
+    const std::function<std::array<double, 4>(int, int, int)>& state) {
+  for (int k = -1; k <= layout_.size(2); ++k)
+    for (int j = -1; j <= layout_.size(1); ++j)
+      for (int i = -1; i <= layout_.size(0); ++i) {
+        const std::size_t cell = layout_.cell(i, j, k);
+        const auto g = layout_.to_global(i, j, k);
+        const auto s = state(g[0], g[1], g[2]);
+        const bool fluid = node_type_[cell] == kFluid;
+        for (int q = 0; q < D3Q19::Q; ++q)
+          f_.at(q, cell) = fluid ? static_cast<Real>(equilibrium(q, s[0], {s[1], s[2], s[3]})) : Real(0);
+      }
+}
+
 void FluidSolver::exchange_halo() { halo_->exchange(f_); }
 
 // Half-way bounce-back (Ladd 1994): the population leaving fluid node x towards a wall

@@ -48,8 +48,10 @@ void for_plane(const FluidSolver& solver, int axis, int index, Visit visit) {
 
 double plane_flux(const FluidSolver& solver, int axis, int index) {
   double flux = 0.0;
-  for_plane(solver, axis, index, [&](std::size_t cell) { flux += solver.velocity(cell)[axis]; });
-  return solver.decomposition().comm.sum(flux);
+  for_plane(solver, axis, index, [&](std::size_t cell) {
+    flux += solver.density(cell) * solver.velocity(cell)[axis];
+  });
+  return solver.decomposition().comm.sum(flux) / solver.parameters().rho0;
 }
 
 double plane_mean_pressure(const FluidSolver& solver, int axis, int index) {

@@ -21,23 +21,27 @@ TEST(OpenBoundary, FluxIsConservedThroughThePoreConstriction) {
   p.periodic = {false, true, true};
   lbm::FlowDrive drive;
   drive.kind = lbm::FlowDrive::kInletVelocity;
-  drive.inlet_velocity = 0.01;
+  drive.inlet_velocity = 0.005;
   lbm::FluidSolver solver(g, p, drive, flow_cases::serial(g, p.periodic));
-  flow_cases::run_to_steady(solver, 1e-9, 40000, 200);
-  const double inflow = drive.inlet_velocity * spec.width * spec.width;
+  flow_cases::run_to_steady(solver, 1e-8, 40000, 200);
+  // The inlet imposes u_in on every node: inflow of mass = rho_in u_in A.
+  const double rho_in = lbm::plane_mean_pressure(solver, 0, 0) * 3.0;
+  const double inflow = rho_in * drive.inlet_velocity * spec.width * spec.width;
   const auto r = lbm::regions_of(spec);
   for (int x : {0, r.free_end - 1, (r.pore_begin + r.pore_end) / 2, r.outlet_end - 1}) {
     const double flux = lbm::plane_flux(solver, 0, x);
-    std::printf("plane x=%d: volumetric flux %.6f (inflow %.6f)\n", x, flux, inflow);
-    // Volumetric flux differs from the conserved mass flux by the density variation (~Ma^2).
-    EXPECT_NEAR(flux / inflow, 1.0, 5e-3) << "plane " << x;
+    std::printf("plane x=%d: flux %.8f (inflow %.8f)\n", x, flux, inflow);
+    // Mass flux is conserved plane to plane at steady state (to the convergence level).
+    EXPECT_NEAR(flux / inflow, 1.0, 1e-5) << "plane " << x;
   }
   EXPECT_GT(lbm::pressure_loss(solver), 0.0);
 }
 
-TEST(OpenBoundary, ImposedPressureLossDrivesPoiseuilleFlux) {
-  // Plane channel between walls normal to y, pressure loss along x.
-  const int nx = 40, H = 9;
+namespace {
+// Plane channel of H nodes between walls normal to y, pressure loss along x. Returns the
+// flux relative to the analytical Q = G H^3 / (12 mu) per unit depth.
+double pressure_driven_channel_flux_ratio(int H) {
+  const int nx = 40;
   lbm::VoxelGeometry g({nx, H, 2});
   lbm::FluidParameters p;
   p.tau = 1.0;
@@ -48,12 +52,22 @@ TEST(OpenBoundary, ImposedPressureLossDrivesPoiseuilleFlux) {
   lbm::FluidSolver solver(g, p, drive, flow_cases::serial(g, p.periodic));
   flow_cases::run_to_steady(solver, 1e-10, 100000, 500);
   EXPECT_NEAR(lbm::pressure_loss(solver) / drive.pressure_loss, 1.0, 1e-6);
-  // Q per unit depth = G H^3 / (12 mu), G = dp / (nx - 1) between the boundary node planes.
+  // G = dp / (nx - 1): the boundary nodes carry the imposed densities.
   const double mu = lbm::TrtParameters::viscosity(1.0);
   const double expected = drive.pressure_loss / (nx - 1) * H * H * H / (12.0 * mu) * 2;  // depth 2
-  const double flux = lbm::plane_flux(solver, 0, nx / 2);
-  std::printf("pressure-driven channel: flux %.6e, analytic %.6e\n", flux, expected);
-  EXPECT_NEAR(flux / expected, 1.0, 0.02);
+  return lbm::plane_flux(solver, 0, nx / 2) / expected;
+}
+}  // namespace
+
+TEST(OpenBoundary, ImposedPressureLossDrivesPoiseuilleFlux) {
+  // Unlike a body force, a pressure gradient along a bounce-back wall leaves a slip of
+  // O(G) in lattice units, whatever Lambda: a relative flux error O(1/H^2).
+  const double r9 = pressure_driven_channel_flux_ratio(9);
+  const double r17 = pressure_driven_channel_flux_ratio(17);
+  std::printf("pressure-driven channel: flux / analytic H=9 %.5f, H=17 %.5f\n", r9, r17);
+  EXPECT_NEAR(r9, 1.0, 0.04);
+  EXPECT_NEAR(r17, 1.0, 0.012);
+  EXPECT_GT((1.0 - r9) / (1.0 - r17), 3.0);  // second order: (17/9)^2 = 3.6
 }
 
 TEST(OpenBoundary, DriveTooStrongIsRefusedWithItsRange) {

@@ -50,6 +50,9 @@ double order(double coarse_error, double fine_error) {
 }
 
 // Pipe of radius R along x, solid outside r = R; wall links cut at the exact radius.
+// Starts from the analytical profile (the steady state does not depend on the start, it is
+// only reached sooner) and runs until the velocity changes by less than 1e-9 relative per
+// 100 steps.
 double pipe(double R, lbm::LinkScheme scheme) {
   const int n = static_cast<int>(std::ceil(2 * R)) + 2;
   const double centre = 0.5 * (n - 1);
@@ -64,6 +67,13 @@ double pipe(double R, lbm::LinkScheme scheme) {
   p.body_force = {kForce, 0.0, 0.0};
   p.periodic = {true, false, false};
   lbm::FluidSolver solver(g, p, lbm::FlowDrive{}, flow_cases::serial(g, p.periodic));
+  const double mu = lbm::TrtParameters::viscosity(1.0);
+  auto exact = [&](int, int y, int z) {
+    const double r2 = std::pow(y - centre, 2) + std::pow(z - centre, 2);
+    return kForce * (R * R - r2) / (4.0 * mu);
+  };
+  solver.initialise_equilibrium(
+      [&](int x, int y, int z) { return std::array<double, 4>{1.0, exact(x, y, z), 0.0, 0.0}; });
 
   std::vector<lbm::BoundaryLink> links;
   const auto& L = solver.layout();
@@ -85,31 +95,35 @@ double pipe(double R, lbm::LinkScheme scheme) {
       }
   for (const auto& l : links) EXPECT_TRUE(l.fraction > 0.0 && l.fraction <= 1.0 + 1e-12);
 
-  auto step = [&] {
+  auto stages_before_collision = [&] {
     solver.exchange_halo();
     solver.apply_wall_bounce_back();
     lbm::apply_links(links, scheme, 1.0, solver.layout(), solver.node_types(),
                      solver.populations());
-    solver.collide_stream();
   };
-  // run_to_steady calls solver.step(); here the step has an extra stage, so loop by hand.
+  // The step has an extra stage, so step by hand instead of solver.step().
   auto previous = lbm::compute_fields(solver).velocity;
-  for (long s = 0; s < 200000; s += 500) {
-    for (int t = 0; t < 500; ++t) step();
+  for (long s = 0; s < 100000; s += 100) {
+    for (int t = 0; t < 100; ++t) {
+      stages_before_collision();
+      solver.collide_stream();
+    }
     const auto now = lbm::compute_fields(solver).velocity;
     double change = 0.0, scale = 1e-300;
     for (std::size_t i = 0; i < now.size(); ++i) {
       change = std::max(change, std::abs(now[i] - previous[i]));
       scale = std::max(scale, std::abs(now[i]));
     }
-    if (change < 1e-12 * scale) break;
+    if (change < 1e-9 * scale) break;
     previous = now;
   }
-  const double mu = lbm::TrtParameters::viscosity(1.0);
-  return flow_cases::relative_l2_error(solver, 0, [&](int, int y, int z) {
-    const double r2 = std::pow(y - centre, 2) + std::pow(z - centre, 2);
-    return kForce * (R * R - r2) / (4.0 * mu);
-  });
+  return flow_cases::relative_l2_error(solver, 0, exact);
+}
+
+// Curved-wall errors oscillate with how the wall cuts the lattice, so each resolution is
+// the mean over three radii around the nominal one (R, R +- 7.5 %).
+double mean_pipe_error(double R, lbm::LinkScheme scheme) {
+  return (pipe(0.925 * R, scheme) + pipe(R, scheme) + pipe(1.075 * R, scheme)) / 3.0;
 }
 
 }  // namespace
@@ -149,20 +163,20 @@ TEST(PlanePoiseuille, SecondOrderConvergence) {
 }
 
 TEST(PipePoiseuille, BouzidiLinksConvergeAtSecondOrder) {
-  const double e4 = pipe(4.0, lbm::LinkScheme::kBouzidi);
-  const double e8 = pipe(8.0, lbm::LinkScheme::kBouzidi);
-  const double e16 = pipe(16.0, lbm::LinkScheme::kBouzidi);
-  std::printf("pipe Bouzidi L2 errors R=4,8,16: %.3e %.3e %.3e; orders %.2f %.2f\n", e4, e8, e16,
-              order(e4, e8), order(e8, e16));
+  const double e4 = mean_pipe_error(4.0, lbm::LinkScheme::kBouzidi);
+  const double e8 = mean_pipe_error(8.0, lbm::LinkScheme::kBouzidi);
+  const double e16 = mean_pipe_error(16.0, lbm::LinkScheme::kBouzidi);
+  std::printf("pipe Bouzidi mean L2 errors R=4,8,16: %.3e %.3e %.3e; orders %.2f %.2f\n", e4, e8,
+              e16, order(e4, e8), order(e8, e16));
   EXPECT_LT(e4, 0.03);
-  EXPECT_LT(e16, 3e-3);
-  EXPECT_GT(order(e4, e16) / 2.0, 1.7);  // mean order over the two refinements
+  EXPECT_LT(e16, 1.5e-3);
+  EXPECT_GT(order(e4, e16) / 2.0, 1.8);  // mean order over the two refinements
 }
 
 TEST(PipePoiseuille, StaircaseBounceBackIsLessAccurateThanBouzidi) {
-  const double bb = pipe(8.0, lbm::LinkScheme::kBounceBack);
-  const double bz = pipe(8.0, lbm::LinkScheme::kBouzidi);
-  std::printf("pipe R=8: bounce-back L2 %.3e, Bouzidi L2 %.3e\n", bb, bz);
+  const double bb = mean_pipe_error(8.0, lbm::LinkScheme::kBounceBack);
+  const double bz = mean_pipe_error(8.0, lbm::LinkScheme::kBouzidi);
+  std::printf("pipe R=8: bounce-back mean L2 %.3e, Bouzidi mean L2 %.3e\n", bb, bz);
   EXPECT_LT(bb, 0.1);
-  EXPECT_LT(bz, bb);
+  EXPECT_LT(bz, 0.5 * bb);
 }

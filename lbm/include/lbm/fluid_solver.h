@@ -1,6 +1,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -56,6 +57,10 @@ class FluidSolver {
 
   // Reset every fluid node to equilibrium at density rho and velocity u.
   void initialise_equilibrium(double rho, const std::array<double, 3>& u);
+  // Node by node: state(global i, j, k) -> {rho, ux, uy, uz}; ghosts included (the
+  // function is called with global coordinates outside the box there).
+  void initialise_equilibrium(
+      const std::function<std::array<double, 4>(int, int, int)>& state);
 
   const BlockLayout& layout() const { return layout_; }
   const Decomposition& decomposition() const { return decomposition_; }
