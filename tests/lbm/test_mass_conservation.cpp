@@ -5,6 +5,7 @@
 
 #include "flow_cases.h"
 #include "lbm/d3q19.h"
+#include "lbm/pore_scene.h"
 
 TEST(MassConservation, ClosedBoxWithObstaclesAndForcing) {
   lbm::VoxelGeometry g({14, 12, 10});
@@ -26,4 +27,44 @@ TEST(MassConservation, ClosedBoxWithObstaclesAndForcing) {
   for (int s = 0; s < 2000; ++s) solver.step();
   const double m1 = lbm::total_mass(solver);
   EXPECT_NEAR(m1 / m0 - 1.0, 0.0, 1e-12) << "mass " << m0 << " -> " << m1;
+}
+
+#include "lbm/checkpoint.h"
+
+// A run stopped, checkpointed and resumed continues exactly as an uninterrupted one.
+TEST(Checkpoint, ResumedRunMatchesUninterruptedRun) {
+  lbm::PoreSceneSpec spec;
+  spec.inlet_length = 4;
+  spec.free_length = 2;
+  spec.pore_length = 4;
+  spec.outlet_length = 4;
+  spec.width = 8;
+  spec.pore_diameter = 5;
+  const auto g = lbm::make_pore_scene(spec);
+  lbm::FluidParameters p;
+  p.periodic = {false, true, true};
+  lbm::FlowDrive drive;
+  drive.kind = lbm::FlowDrive::kInletVelocity;
+  drive.inlet_velocity = 0.02;
+  lbm::FluidSolver reference(g, p, drive, flow_cases::serial(g, p.periodic));
+  for (int s = 0; s < 200; ++s) reference.step();
+  lbm::FluidSolver first(g, p, drive, flow_cases::serial(g, p.periodic));
+  for (int s = 0; s < 120; ++s) first.step();
+  const std::string path = ::testing::TempDir() + "fluid.checkpoint";
+  lbm::write_checkpoint(first, path);
+  lbm::FluidSolver resumed(g, p, drive, flow_cases::serial(g, p.periodic));
+  lbm::read_checkpoint(resumed, path);
+  EXPECT_EQ(resumed.time_step(), 120);
+  for (int s = 0; s < 80; ++s) resumed.step();
+  EXPECT_EQ(resumed.populations().raw(), reference.populations().raw());
+
+  // A checkpoint of another lattice is refused with a clear message.
+  lbm::VoxelGeometry other({6, 8, 8});
+  lbm::FluidSolver wrong(other, p, drive, flow_cases::serial(other, p.periodic));
+  try {
+    lbm::read_checkpoint(wrong, path);
+    FAIL() << "mismatched checkpoint accepted";
+  } catch (const lbm::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("lattice or decomposition differs"), std::string::npos);
+  }
 }

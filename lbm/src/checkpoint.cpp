@@ -1,0 +1,101 @@
+#include "lbm/checkpoint.h"
+
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+
+#include "lbm/d3q19.h"
+#include "lbm/input_error.h"
+
+namespace lbm {
+namespace {
+
+constexpr char kMagic[8] = {'L', 'B', 'M', 'P', 'C', 'K', '0', '1'};
+
+struct Header {
+  char magic[8];
+  std::int32_t real_bytes;
+  std::int32_t global_lo[3], global_hi[3], owned_lo[3], owned_hi[3];
+  std::int64_t time_step;
+};
+
+Header header_of(const FluidSolver& s) {
+  Header h{};
+  std::memcpy(h.magic, kMagic, sizeof kMagic);
+  h.real_bytes = sizeof(Real);
+  for (int a = 0; a < 3; ++a) {
+    h.global_lo[a] = s.decomposition().global.lo[a];
+    h.global_hi[a] = s.decomposition().global.hi[a];
+    h.owned_lo[a] = s.decomposition().owned.lo[a];
+    h.owned_hi[a] = s.decomposition().owned.hi[a];
+  }
+  h.time_step = s.time_step();
+  return h;
+}
+
+std::string rank_path(const FluidSolver& s, const std::string& path) {
+  return path + "." + std::to_string(s.decomposition().comm.rank());
+}
+
+// Visits every owned cell in storage order (x fastest).
+template <class Visit>
+void for_owned(const BlockLayout& g, Visit visit) {
+  for (int k = 0; k < g.size(2); ++k)
+    for (int j = 0; j < g.size(1); ++j)
+      for (int i = 0; i < g.size(0); ++i) visit(g.cell(i, j, k));
+}
+
+}  // namespace
+
+void write_checkpoint(const FluidSolver& solver, const std::string& path) {
+  const std::string file = rank_path(solver, path);
+  std::ofstream out(file, std::ios::binary);
+  if (!out) throw InputError("fluid checkpoint '" + file + "': cannot be written");
+  const Header h = header_of(solver);
+  out.write(reinterpret_cast<const char*>(&h), sizeof h);
+  const auto& g = solver.layout();
+  for_owned(g, [&](std::size_t cell) {
+    out.put(static_cast<char>(solver.node_types()[cell]));
+    for (int q = 0; q < D3Q19::Q; ++q) {
+      const Real v = solver.populations().at(q, cell);
+      out.write(reinterpret_cast<const char*>(&v), sizeof v);
+    }
+  });
+  if (!out) throw InputError("fluid checkpoint '" + file + "': write failed (disk full?)");
+}
+
+void read_checkpoint(FluidSolver& solver, const std::string& path) {
+  const std::string file = rank_path(solver, path);
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError("fluid checkpoint '" + file + "': cannot be opened");
+  Header h{};
+  in.read(reinterpret_cast<char*>(&h), sizeof h);
+  if (!in || std::memcmp(h.magic, kMagic, sizeof kMagic) != 0)
+    throw InputError("fluid checkpoint '" + file + "': not an lbm-pore fluid checkpoint");
+  const Header expected = header_of(solver);
+  if (h.real_bytes != expected.real_bytes)
+    throw InputError("fluid checkpoint '" + file + "': written with " +
+                     std::to_string(h.real_bytes * 8) + "-bit populations, this build uses " +
+                     std::to_string(expected.real_bytes * 8));
+  for (int a = 0; a < 3; ++a)
+    if (h.global_lo[a] != expected.global_lo[a] || h.global_hi[a] != expected.global_hi[a] ||
+        h.owned_lo[a] != expected.owned_lo[a] || h.owned_hi[a] != expected.owned_hi[a])
+      throw InputError("fluid checkpoint '" + file +
+                       "': lattice or decomposition differs from this run (same lattice and "
+                       "the same processor grid are required)");
+  const auto& g = solver.layout();
+  for_owned(g, [&](std::size_t cell) {
+    char type = 0;
+    in.get(type);
+    solver.node_types()[cell] = static_cast<std::uint8_t>(type);
+    for (int q = 0; q < D3Q19::Q; ++q) {
+      Real v;
+      in.read(reinterpret_cast<char*>(&v), sizeof v);
+      solver.populations().at(q, cell) = v;
+    }
+  });
+  if (!in) throw InputError("fluid checkpoint '" + file + "': truncated");
+  solver.set_time_step(h.time_step);
+}
+
+}  // namespace lbm
