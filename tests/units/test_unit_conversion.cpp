@@ -54,3 +54,30 @@ TEST(UnitConversion, TauOutOfRangeNamesTheKeywordsAndRange) {
     EXPECT_EQ(std::string(e.what()).rfind("dx", 0), 0u);
   }
 }
+
+#include "coupling/lattice_frame.h"
+
+TEST(LatticeFrame, SubdomainBoxesTileTheLattice) {
+  coupling::LatticeFrame frame;
+  frame.origin = {0.05, -1.0, 0.0};
+  frame.dx = 0.1;
+  frame.dims = {37, 5, 5};
+  // Three uneven subdomains along x, cut at arbitrary positions (one exactly on a node).
+  const double cuts[4] = {0.0, 1.05, 2.3333, 3.7};
+  int next = 0;
+  for (int p = 0; p < 3; ++p) {
+    const double lo[3] = {cuts[p], -1.05, -0.05}, hi[3] = {cuts[p + 1], -0.5, 0.45};
+    const bool at_lower[3] = {p == 0, true, true}, at_upper[3] = {p == 2, true, true};
+    const lbm::Box box = frame.owned_box(lo, hi, at_lower, at_upper);
+    EXPECT_EQ(box.lo[0], next) << "rank " << p;
+    next = box.hi[0];
+    // Every owned node lies inside the subdomain (up to the end ranks' extension).
+    if (p > 0) {
+      EXPECT_GE(frame.origin[0] + box.lo[0] * frame.dx, cuts[p] - 1e-9);
+    }
+    if (p < 2) {
+      EXPECT_LT(frame.origin[0] + (box.hi[0] - 1) * frame.dx, cuts[p + 1]);
+    }
+  }
+  EXPECT_EQ(next, 37);
+}

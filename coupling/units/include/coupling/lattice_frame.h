@@ -1,0 +1,28 @@
+#pragma once
+#include <array>
+
+#include "lbm/block_layout.h"
+
+namespace coupling {
+
+// Where the lattice sits in the script's coordinates: node (i,j,k) is at
+// origin + (i,j,k) * dx, for 0 <= i < dims[0] etc.
+struct LatticeFrame {
+  std::array<double, 3> origin{0.0, 0.0, 0.0};
+  double dx = 1.0;
+  std::array<int, 3> dims{1, 1, 1};
+
+  // Lattice coordinates of a point (node i at integer i).
+  std::array<double, 3> to_lattice(const double* x) const {
+    return {(x[0] - origin[0]) / dx, (x[1] - origin[1]) / dx, (x[2] - origin[2]) / dx};
+  }
+
+  // The nodes owned by a rank whose LIGGGHTS subdomain is [sublo, subhi): those whose
+  // position lies inside it. Ranks whose subdomains tile the box get boxes that tile the
+  // lattice exactly (a node on a shared face belongs to the upper rank). The first/last
+  // ranks along an axis (at_lower/at_upper) extend to the lattice's ends.
+  lbm::Box owned_box(const double* sublo, const double* subhi, const bool* at_lower,
+                     const bool* at_upper) const;
+};
+
+}  // namespace coupling
