@@ -83,3 +83,22 @@ TEST(OpenBoundary, DriveTooStrongIsRefusedWithItsRange) {
     EXPECT_NE(std::string(e.what()).find("(-0.3, 0.3)"), std::string::npos);
   }
 }
+
+#include "lbm/d3q19.h"
+#include "lbm/stability.h"
+
+TEST(Stability, NanAndRunawayNodesAreReportedWithTheirPlace) {
+  lbm::VoxelGeometry g({6, 5, 4});
+  lbm::FluidParameters p;
+  p.periodic = {true, true, true};
+  lbm::FluidSolver solver(g, p, lbm::FlowDrive{}, flow_cases::serial(g, p.periodic));
+  EXPECT_FALSE(lbm::check_fluid_state(solver, 0.3).found);
+  solver.populations().at(1, solver.layout().cell(3, 2, 1)) = std::nan("");
+  const auto problem = lbm::check_fluid_state(solver, 0.3);
+  ASSERT_TRUE(problem.found);
+  EXPECT_EQ(problem.node, (std::array<int, 3>{3, 2, 1}));
+  EXPECT_NE(problem.describe().find("node (3,2,1)"), std::string::npos);
+  solver.initialise_equilibrium(1.0, {0.4, 0.0, 0.0});
+  EXPECT_TRUE(lbm::check_fluid_state(solver, 0.3).found);
+  EXPECT_NEAR(lbm::max_speed(solver), 0.4, 1e-12);
+}

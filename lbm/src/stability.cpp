@@ -1,0 +1,59 @@
+#include "lbm/stability.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "lbm/node_type.h"
+
+namespace lbm {
+
+std::string FluidStateProblem::describe() const {
+  char text[200];
+  std::snprintf(text, sizeof text, "node (%d,%d,%d): density %g, speed %g (lattice units)",
+                node[0], node[1], node[2], density, speed);
+  return text;
+}
+
+namespace {
+template <class Visit>
+void for_owned_fluid(const FluidSolver& s, Visit visit) {
+  const BlockLayout& g = s.layout();
+  for (int k = 0; k < g.size(2); ++k)
+    for (int j = 0; j < g.size(1); ++j)
+      for (int i = 0; i < g.size(0); ++i) {
+        const std::size_t cell = g.cell(i, j, k);
+        if (s.node_types()[cell] == kFluid && !visit(cell, i, j, k)) return;
+      }
+}
+}  // namespace
+
+FluidStateProblem check_fluid_state(const FluidSolver& solver, double max_speed) {
+  FluidStateProblem problem;
+  for_owned_fluid(solver, [&](std::size_t cell, int i, int j, int k) {
+    const double rho = solver.density(cell);
+    const auto u = solver.velocity(cell);
+    const double speed = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+    if (std::isfinite(rho) && rho > 0.0 && std::isfinite(speed) && speed <= max_speed)
+      return true;
+    problem.found = true;
+    problem.node = solver.layout().to_global(i, j, k);
+    problem.density = rho;
+    problem.speed = speed;
+    return false;
+  });
+  return problem;
+}
+
+double max_speed(const FluidSolver& solver) {
+  double largest = 0.0;
+  for_owned_fluid(solver, [&](std::size_t cell, int, int, int) {
+    const auto u = solver.velocity(cell);
+    largest = std::max(largest, std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]));
+    return true;
+  });
+  solver.decomposition().comm.max(&largest, 1);
+  return largest;
+}
+
+}  // namespace lbm
