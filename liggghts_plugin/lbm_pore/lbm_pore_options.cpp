@@ -1,0 +1,168 @@
+#include "lbm_pore_options.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+#include "lbm/input_error.h"
+
+namespace lbm_pore {
+
+namespace {
+
+[[noreturn]] void fail(const std::string& message) {
+  throw lbm::InputError("fix lbm/pore: " + message);
+}
+
+// Reads words one by one with range-checked conversions.
+class Words {
+ public:
+  explicit Words(const std::vector<std::string>& w) : w_(w) {}
+  bool done() const { return i_ >= w_.size(); }
+  std::string next_keyword() { return w_[i_++]; }
+  std::string text(const std::string& keyword) {
+    if (done()) fail("keyword '" + keyword + "' needs a value");
+    return w_[i_++];
+  }
+  double number(const std::string& keyword, double lo, double hi, bool lo_open = true) {
+    const std::string word = text(keyword);
+    char* end = nullptr;
+    const double v = std::strtod(word.c_str(), &end);
+    const bool in_range = (lo_open ? v > lo : v >= lo) && v <= hi;
+    if (end == word.c_str() || *end != '\0' || !std::isfinite(v) || !in_range)
+      fail("keyword '" + keyword + "' = '" + word + "': must be a number in " +
+           (lo_open ? "(" : "[") + format(lo) + ", " + format(hi) + "]");
+    return v;
+  }
+  int integer(const std::string& keyword, int lo, int hi) {
+    const std::string word = text(keyword);
+    char* end = nullptr;
+    const long v = std::strtol(word.c_str(), &end, 10);
+    if (end == word.c_str() || *end != '\0' || v < lo || v > hi)
+      fail("keyword '" + keyword + "' = '" + word + "': must be an integer in [" +
+           std::to_string(lo) + ", " + std::to_string(hi) + "]");
+    return static_cast<int>(v);
+  }
+  bool yes_no(const std::string& keyword) {
+    const std::string word = text(keyword);
+    if (word == "yes" || word == "on") return true;
+    if (word == "no" || word == "off") return false;
+    fail("keyword '" + keyword + "' = '" + word + "': must be yes or no");
+  }
+  static std::string format(double v) {
+    if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", v);
+    return text;
+  }
+
+ private:
+  const std::vector<std::string>& w_;
+  std::size_t i_ = 0;
+};
+
+constexpr double kInf = HUGE_VAL;
+
+void parse_pore_scene(Words& words, PoreOptions& o) {
+  // pore inlet Li free Lf length L outlet Lo width W diameter D (any order, all required)
+  const char* names[] = {"inlet", "free", "length", "outlet", "width", "diameter"};
+  double* targets[] = {&o.inlet_length, &o.free_length, &o.pore_length,
+                       &o.outlet_length, &o.width,       &o.pore_diameter};
+  bool seen[6] = {false, false, false, false, false, false};
+  for (int n = 0; n < 6; ++n) {
+    const std::string key = words.text("scene pore");
+    int which = -1;
+    for (int k = 0; k < 6; ++k)
+      if (key == names[k]) which = k;
+    if (which < 0 || seen[which])
+      fail("scene pore: expected 'inlet', 'free', 'length', 'outlet', 'width' and 'diameter' "
+           "once each, got '" + key + "'");
+    seen[which] = true;
+    // The free region may be empty; every other length must be positive.
+    const bool zero_allowed = which == 1;
+    *targets[which] = words.number(std::string("scene pore ") + key, 0.0, kInf, !zero_allowed);
+  }
+  if (o.pore_diameter > o.width)
+    fail("scene pore diameter = " + Words::format(o.pore_diameter) +
+         ": must be <= width = " + Words::format(o.width) + " (the pore must fit in the box)");
+}
+
+}  // namespace
+
+PoreOptions parse_pore_options(const std::vector<std::string>& args) {
+  PoreOptions o;
+  Words words(args);
+  bool drive_given = false;
+  while (!words.done()) {
+    const std::string key = words.next_keyword();
+    if (key == "dx") {
+      o.dx = words.number(key, 0.0, kInf);
+    } else if (key == "rho") {
+      o.rho = words.number(key, 0.0, kInf);
+    } else if (key == "nu") {
+      o.nu = words.number(key, 0.0, kInf);
+    } else if (key == "n_dem") {
+      o.n_dem = words.integer(key, 1, 100000);
+    } else if (key == "magic") {
+      o.magic = words.number(key, 0.0, 10.0);
+    } else if (key == "scene") {
+      const std::string kind = words.text(key);
+      if (kind == "pore") {
+        o.scene = PoreOptions::Scene::kPore;
+        parse_pore_scene(words, o);
+      } else if (kind == "voxels") {
+        o.scene = PoreOptions::Scene::kVoxelFile;
+        o.voxel_file = words.text("scene voxels");
+      } else {
+        fail("keyword 'scene' = '" + kind + "': must be 'pore' or 'voxels'");
+      }
+    } else if (key == "origin") {
+      o.origin_given = true;
+      for (int a = 0; a < 3; ++a) o.origin[a] = words.number(key, -kInf, kInf);
+    } else if (key == "lateral") {
+      const std::string v = words.text(key);
+      if (v != "periodic" && v != "wall")
+        fail("keyword 'lateral' = '" + v + "': must be 'periodic' or 'wall'");
+      o.lateral_periodic = v == "periodic";
+    } else if (key == "velocity") {
+      o.drive = PoreOptions::Drive::kVelocity;
+      o.drive_value = words.number(key, -kInf, kInf);
+      drive_given = true;
+    } else if (key == "pressure_loss") {
+      o.drive = PoreOptions::Drive::kPressureLoss;
+      o.drive_value = words.number(key, -kInf, kInf);
+      drive_given = true;
+    } else if (key == "boundary") {
+      o.boundary = words.text(key);
+      if (o.boundary != "bounce_back" && o.boundary != "bouzidi" && o.boundary != "mls")
+        fail("keyword 'boundary' = '" + o.boundary + "': must be bounce_back, bouzidi or mls");
+    } else if (key == "lubrication") {
+      o.lubrication = words.yes_no(key);
+    } else if (key == "lubrication_cutoff") {
+      o.lubrication_cutoff = words.number(key, 0.0, 2.0);
+    } else if (key == "deposit_speed") {
+      o.deposit_speed = words.number(key, 0.0, kInf, false);
+    } else if (key == "vtk") {
+      o.vtk_every = words.integer(key, 0, 1000000000);
+      o.vtk_directory = words.text("vtk (directory)");
+    } else if (key == "checkpoint") {
+      o.checkpoint_prefix = words.text(key);
+    } else {
+      fail("unknown keyword '" + key + "'; valid keywords: " + pore_options_usage());
+    }
+  }
+  if (o.dx <= 0.0) fail("keyword 'dx' (lattice spacing, > 0) is required");
+  if (o.scene == PoreOptions::Scene::kNone)
+    fail("keyword 'scene' is required: 'scene pore inlet .. free .. length .. outlet .. width .. "
+         "diameter ..' or 'scene voxels <file>'");
+  if (!drive_given) fail("a drive is required: 'velocity <U>' or 'pressure_loss <P>'");
+  return o;
+}
+
+const char* pore_options_usage() {
+  return "dx, rho, nu, n_dem, magic, scene (pore|voxels), origin, lateral, velocity, "
+         "pressure_loss, boundary, lubrication, lubrication_cutoff, deposit_speed, vtk, "
+         "checkpoint";
+}
+
+}  // namespace lbm_pore

@@ -1,0 +1,48 @@
+#pragma once
+// Keywords of `fix ID group lbm/pore keyword value ...`, parsed without LIGGGHTS so the
+// parser is unit-tested on its own. Lengths, velocities, pressures, densities and
+// viscosities are in the script's units; the fix converts them with coupling::UnitConversion.
+#include <array>
+#include <string>
+#include <vector>
+
+namespace lbm_pore {
+
+struct PoreOptions {
+  // Lattice and fluid.
+  double dx = 0.0;            // lattice spacing (required)
+  double rho = 1.0;           // fluid density
+  double nu = 1.0 / 6.0;      // kinematic viscosity
+  int n_dem = 100;            // DEM steps per fluid step
+  double magic = 3.0 / 16.0;  // TRT magic parameter
+  // Geometry: the paper's scene from lengths, or a voxel file.
+  enum class Scene { kNone, kPore, kVoxelFile } scene = Scene::kNone;
+  double inlet_length = 0, free_length = 0, pore_length = 0, outlet_length = 0;
+  double width = 0, pore_diameter = 0;
+  std::string voxel_file;
+  bool origin_given = false;
+  std::array<double, 3> origin{0.0, 0.0, 0.0};
+  bool lateral_periodic = true;
+  // Drive (along +x).
+  enum class Drive { kVelocity, kPressureLoss } drive = Drive::kVelocity;
+  double drive_value = 0.0;
+  // Particle coupling.
+  std::string boundary = "mls";  // bounce_back | bouzidi | mls
+  bool lubrication = true;
+  double lubrication_cutoff = 2.0 / 3.0;  // in lattice cells
+  double deposit_speed = -1.0;            // < 0: 1 % of the drive velocity scale
+  // Output.
+  int vtk_every = 0;
+  std::string vtk_directory = "lbm_vtk";
+  // Restart companion file prefix ("" = restart file name + ".fluid").
+  std::string checkpoint_prefix;
+};
+
+// Parses arg[0..narg) (the words after the style name). Throws lbm::InputError with a
+// message naming the keyword and its valid range.
+PoreOptions parse_pore_options(const std::vector<std::string>& args);
+
+// The keyword reference printed in errors and the doc page.
+const char* pore_options_usage();
+
+}  // namespace lbm_pore

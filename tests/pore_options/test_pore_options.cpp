@@ -1,0 +1,75 @@
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "lbm/input_error.h"
+#include "lbm_pore_options.h"
+
+namespace {
+std::vector<std::string> split(const std::string& line) {
+  std::istringstream in(line);
+  std::vector<std::string> words;
+  for (std::string w; in >> w;) words.push_back(w);
+  return words;
+}
+std::string error_of(const std::string& line) {
+  try {
+    lbm_pore::parse_pore_options(split(line));
+  } catch (const lbm::InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+const std::string kScene =
+    " scene pore inlet 3 free 2 length 4 outlet 3 width 5 diameter 3.5 velocity 0.01";
+}  // namespace
+
+TEST(PoreOptions, PaperSceneWithDefaults) {
+  const auto o = lbm_pore::parse_pore_options(split("dx 0.142857" + kScene));
+  EXPECT_DOUBLE_EQ(o.dx, 0.142857);
+  EXPECT_EQ(o.scene, lbm_pore::PoreOptions::Scene::kPore);
+  EXPECT_DOUBLE_EQ(o.pore_diameter, 3.5);
+  EXPECT_DOUBLE_EQ(o.pore_length, 4);
+  EXPECT_EQ(o.n_dem, 100);
+  EXPECT_DOUBLE_EQ(o.nu, 1.0 / 6.0);
+  EXPECT_EQ(o.boundary, "mls");
+  EXPECT_TRUE(o.lubrication);
+  EXPECT_EQ(o.drive, lbm_pore::PoreOptions::Drive::kVelocity);
+}
+
+TEST(PoreOptions, AllKeywords) {
+  const auto o = lbm_pore::parse_pore_options(
+      split("dx 1 rho 2 nu 0.1 n_dem 50 magic 0.25 scene voxels g.raw origin 0 1 2 lateral wall "
+            "pressure_loss 0.02 boundary bouzidi lubrication no lubrication_cutoff 0.5 "
+            "deposit_speed 0.001 vtk 10 out checkpoint ck"));
+  EXPECT_EQ(o.voxel_file, "g.raw");
+  EXPECT_FALSE(o.lateral_periodic);
+  EXPECT_EQ(o.drive, lbm_pore::PoreOptions::Drive::kPressureLoss);
+  EXPECT_DOUBLE_EQ(o.drive_value, 0.02);
+  EXPECT_EQ(o.vtk_every, 10);
+  EXPECT_EQ(o.vtk_directory, "out");
+  EXPECT_FALSE(o.lubrication);
+  EXPECT_EQ(o.checkpoint_prefix, "ck");
+}
+
+TEST(PoreOptions, BadValuesNameTheKeywordAndRange) {
+  EXPECT_NE(error_of("dx -1" + kScene).find("'dx' = '-1': must be a number in (0, inf]"),
+            std::string::npos);
+  EXPECT_NE(error_of("dx 1 n_dem 0" + kScene).find("'n_dem' = '0': must be an integer in [1, 100000]"),
+            std::string::npos);
+  EXPECT_NE(error_of("dx 1 magic abc" + kScene).find("'magic'"), std::string::npos);
+  EXPECT_NE(error_of("dx 1 boundary curved" + kScene).find("bounce_back, bouzidi or mls"),
+            std::string::npos);
+  EXPECT_NE(error_of("dx 1 colour red" + kScene).find("unknown keyword 'colour'"), std::string::npos);
+  EXPECT_NE(error_of(kScene).find("'dx'"), std::string::npos);
+  EXPECT_NE(error_of("dx 1 velocity 0.1").find("'scene' is required"), std::string::npos);
+  EXPECT_NE(error_of("dx 1 scene pore inlet 3 free 2 length 4 outlet 3 width 5 diameter 6 velocity 1")
+                .find("must be <= width"),
+            std::string::npos);
+  EXPECT_NE(error_of("dx 1 scene pore inlet 3 free 2").find("'scene pore'"), std::string::npos);
+  EXPECT_NE(error_of("dx 1 lubrication maybe" + kScene).find("yes or no"), std::string::npos);
+  EXPECT_NE(error_of("dx 1 scene pore inlet 3 free 2 length 4 outlet 3 width 5 diameter 3")
+                .find("drive is required"),
+            std::string::npos);
+  EXPECT_NE(error_of("dx 1 vtk 10").find("'vtk (directory)' needs a value"), std::string::npos);
+}
