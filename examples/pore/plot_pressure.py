@@ -1,0 +1,93 @@
+#!/usr/bin/env python3
+"""Plot the pressure loss across the pore against time from a LIGGGHTS log, marking the
+erosive bursts: sudden drops of the pressure loss (paper, Figs. 2-3).
+
+Usage: plot_pressure.py log.liggghts [--out pressure.png] [--drop 0.2] [--window 5]
+
+The log must contain a thermo block whose header has the columns `Step` and the fix's
+pressure loss, e.g. `thermo_style custom step f_pore[1] f_pore[6] ...` (the column named
+f_<ID>[1]). A burst is a fall of the pressure loss by more than `--drop` (fraction of the
+preceding peak) within `--window` thermo rows. Prints each burst as
+`BURST step peak after drop_fraction` and writes the plot.
+"""
+import argparse
+import sys
+
+
+def read_thermo(path):
+    """Returns (header, rows) of every thermo block in the log, concatenated."""
+    header, rows = None, []
+    with open(path) as log:
+        for line in log:
+            words = line.split()
+            if words and words[0] == "Step":
+                header = words
+                continue
+            if header is None or len(words) != len(header):
+                continue
+            try:
+                rows.append([float(w) for w in words])
+            except ValueError:
+                header = None if words and words[0].startswith("Loop") else header
+    if header is None or not rows:
+        sys.exit(f"{path}: no thermo block with a 'Step' header found")
+    return header, rows
+
+
+def find_bursts(steps, pressure, drop, window):
+    """Indices (peak, after) where the pressure falls by more than `drop` of the peak."""
+    bursts, i = [], 0
+    while i < len(pressure):
+        peak = pressure[i]
+        j_end = min(len(pressure), i + window + 1)
+        fall = [j for j in range(i + 1, j_end) if peak > 0 and pressure[j] < (1 - drop) * peak]
+        if fall and all(pressure[i] >= pressure[k] for k in range(max(0, i - window), i)):
+            bursts.append((i, fall[-1]))
+            i = fall[-1]
+        i += 1
+    return bursts
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("log")
+    parser.add_argument("--out", default="pressure_loss.png")
+    parser.add_argument("--column", default=None, help="thermo column of the pressure loss")
+    parser.add_argument("--drop", type=float, default=0.2)
+    parser.add_argument("--window", type=int, default=5)
+    args = parser.parse_args()
+    header, rows = read_thermo(args.log)
+    column = args.column or next((h for h in header if h.startswith("f_") and h.endswith("[1]")), None)
+    if column not in header:
+        sys.exit(f"{args.log}: no column {column!r} in thermo header {header}")
+    c = header.index(column)
+    steps = [r[0] for r in rows]
+    pressure = [r[c] for r in rows]
+    bursts = find_bursts(steps, pressure, args.drop, args.window)
+    for peak, after in bursts:
+        print(f"BURST step {steps[peak]:.0f} peak {pressure[peak]:.6g} after {pressure[after]:.6g} "
+              f"drop {1 - pressure[after] / pressure[peak]:.3f}")
+    print(f"{len(bursts)} burst(s) in {len(rows)} thermo rows")
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        print("matplotlib not installed (apt-get install python3-matplotlib): no plot")
+        return
+    fig, ax = plt.subplots(figsize=(7, 4))
+    ax.plot(steps, pressure, lw=1.2, label="pressure loss")
+    for peak, after in bursts:
+        ax.axvspan(steps[peak], steps[after], color="tab:red", alpha=0.25)
+        ax.plot([steps[peak]], [pressure[peak]], "v", color="tab:red")
+    ax.set_xlabel("DEM step")
+    ax.set_ylabel(f"pressure loss ({column})")
+    ax.set_title(f"{len(bursts)} erosive burst(s) marked")
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(args.out, dpi=120)
+    print(f"wrote {args.out}")
+
+
+if __name__ == "__main__":
+    main()
