@@ -1,0 +1,45 @@
+#pragma once
+// Particle-wall contact of the paper (section II, "Particle-Wall Interaction"): for one
+// surface point, dash-dot repulsion with the wall stiffness k_w and damping k_q while
+// overlapping (Eq. 1), adhesion F_a = h k_a R_i while the gap is within 0.03 R_i (Eq. 4),
+// and Coulomb friction capped at mu N (Eq. 5). The wall is static and infinitely heavy, so
+// the effective mass is the particle's. The total wall force is the sum over the surface
+// points of voxel_surface.h (Eq. 6), which merges the voxels into faces, edges and corners.
+#include "contact/coulomb_friction.h"
+#include "contact/dash_dot.h"
+#include "contact/short_range_attraction.h"
+#include "contact/vec3.h"
+
+namespace contact {
+
+struct WallContactParams {
+  DashDotParams normal;      // k_w and zeta (paper: k_q = 0.5 sqrt(k_w m_i) -> zeta = 0.25)
+  AdhesionParams adhesion;   // k_a
+  FrictionParams friction;   // mu, k_t
+};
+
+struct WallContactInput {
+  Vec3 normal;            // unit, from the wall towards the particle centre
+  double gap = 0.0;       // surface distance minus radius; negative = overlap
+  double radius = 0.0;
+  double mass = 0.0;
+  Vec3 velocity;          // particle velocity (the wall is at rest)
+  Vec3 spring;            // tangential spring of this contact from the last step
+  double dt = 0.0;
+};
+
+struct WallContactResult {
+  Vec3 force;             // total force on the particle from this contact
+  Vec3 spring;            // tangential spring to keep for the next step
+  bool active = false;    // overlapping or adhering; an inactive contact forgets its spring
+  bool sliding = false;
+};
+
+WallContactResult wall_contact_force(const WallContactParams& params, const WallContactInput& in);
+
+// Reach of the wall force beyond the particle surface (the adhesion range).
+inline double wall_contact_reach(const WallContactParams& params, double radius) {
+  return radius + adhesion_range(params.adhesion, radius);
+}
+
+}  // namespace contact

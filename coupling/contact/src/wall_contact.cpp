@@ -1,0 +1,41 @@
+#include "contact/wall_contact.h"
+
+namespace contact {
+
+WallContactResult wall_contact_force(const WallContactParams& params, const WallContactInput& in) {
+  WallContactResult out;
+  double normal_force = 0.0;     // along the normal, repulsive positive
+  double friction_limit_force = 0.0;  // N of coulomb_friction.h
+  if (in.gap < 0.0) {
+    NormalContactInput normal_in;
+    normal_in.overlap = -in.gap;
+    normal_in.overlap_rate = -dot(in.velocity, in.normal);
+    normal_in.effective_mass = in.mass;
+    normal_force = dash_dot_force(params.normal, normal_in);
+    friction_limit_force = params.normal.k_n * normal_in.overlap;
+  } else if (in.gap <= adhesion_range(params.adhesion, in.radius)) {
+    normal_force = -adhesion_force(params.adhesion, in.gap, in.radius);
+    friction_limit_force = -normal_force;
+  } else {
+    return out;  // out of reach: no force, spring forgotten
+  }
+  out.active = true;
+  out.force = normal_force * in.normal;
+
+  if (params.friction.mu > 0.0) {
+    FrictionInput friction_in;
+    friction_in.normal = in.normal;
+    friction_in.relative_velocity = in.velocity;
+    friction_in.spring = in.spring;
+    friction_in.normal_force = friction_limit_force;
+    friction_in.effective_mass = in.mass;
+    friction_in.dt = in.dt;
+    const FrictionResult friction = coulomb_friction(params.friction, friction_in);
+    out.force += friction.force;
+    out.spring = friction.spring;
+    out.sliding = friction.sliding;
+  }
+  return out;
+}
+
+}  // namespace contact
