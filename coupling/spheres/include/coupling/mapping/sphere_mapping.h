@@ -1,0 +1,50 @@
+#pragma once
+// Mapping: which lattice nodes the spheres cover (waLBerla's mapping/ stage).
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "coupling/particle_view.h"
+#include "coupling/periodic_box.h"
+#include "lbm/block_layout.h"
+
+namespace coupling {
+
+// What changed since the last mapping. Cells are local linear indices (ghosts included).
+struct MappingChange {
+  std::vector<std::size_t> covered;          // fluid nodes a sphere now covers
+  std::vector<std::size_t> uncovered;        // moving nodes no sphere covers any more
+  std::vector<int> uncovered_particle;       // the sphere that just left each (index in view)
+};
+
+// A node belongs to a sphere when its centre lies strictly inside: |x_node - X|^2 < R^2
+// (minimum image on periodic axes). Only kFluid and kMoving nodes change type; a sphere
+// overlapping a static wall leaves the wall voxels solid. Where spheres overlap, the one
+// with the lower index takes the node (owned particles come first in the view).
+class SphereMapping {
+ public:
+  SphereMapping(const lbm::BlockLayout& layout, const PeriodicBox& box);
+
+  // Maps the particles of `view` onto every local cell (ghost layer included). Leaves
+  // node_type unchanged: commit() applies the change after the refill has read the old
+  // state.
+  MappingChange update(const ParticleView& view, const std::vector<std::uint8_t>& node_type);
+  void commit(const MappingChange& change, std::vector<std::uint8_t>& node_type) const;
+
+  // Index (in the last mapped view) of the sphere covering `cell`, or -1.
+  int particle_at(std::size_t cell) const { return owner_[cell]; }
+  const std::vector<std::size_t>& moving_cells() const { return moving_; }
+  // Global position of a local cell.
+  Vec3 node_position(std::size_t cell) const;
+  const lbm::BlockLayout& layout() const { return layout_; }
+  const PeriodicBox& box() const { return box_; }
+
+ private:
+  lbm::BlockLayout layout_;
+  PeriodicBox box_;
+  std::vector<int> owner_;        // per cell: covering particle or -1
+  std::vector<int> shell_;        // per cell: scratch, particle whose shell holds the cell
+  std::vector<std::size_t> moving_;  // cells with owner_ >= 0
+};
+
+}  // namespace coupling

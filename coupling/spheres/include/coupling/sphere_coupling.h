@@ -1,0 +1,72 @@
+#pragma once
+// One coupled fluid step with resolved moving spheres, as a named pipeline of stages
+// (waLBerla's time loop): map -> refill -> exchange_halo -> static walls -> moving walls ->
+// momentum exchange -> open boundaries -> collide_stream.
+#include <chrono>
+
+#include "coupling/boundary/moving_wall_scheme.h"
+#include "coupling/boundary/sphere_links.h"
+#include "coupling/force/momentum_exchange.h"
+#include "coupling/mapping/sphere_mapping.h"
+#include "coupling/particle_view.h"
+#include "coupling/reconstruction/refill.h"
+#include "lbm/fluid_solver.h"
+
+namespace coupling {
+
+struct SphereCouplingOptions {
+  MovingWallScheme wall_scheme = MovingWallScheme::kMeiLuoShyy;
+  RefillScheme refill = RefillScheme::kEquilibriumAveragedDensity;
+  MomentumExchange momentum_exchange = MomentumExchange::kGalileanInvariant;
+};
+
+// Wall-clock seconds spent in each stage, accumulated over steps.
+struct StageTimes {
+  double mapping = 0.0, refill = 0.0, halo = 0.0, static_walls = 0.0, moving_walls = 0.0,
+         force = 0.0, open_boundaries = 0.0, collide_stream = 0.0;
+};
+
+// Owns the particle-dependent state of one rank's lattice (the mapping and the links) and
+// the hydrodynamic loads of the last step. The FluidSolver stays the caller's.
+//
+// The host drives one fluid step every N_DEM DEM substeps:
+//   coupling.step(view);                    // positions and velocities at time t
+//   for each DEM substep: coupling.add_forces(view_forces)  // or read force(p)/torque(p)
+// The loads of a step act unchanged over the next N_DEM substeps (paper Sec. II.D); they are
+// indexed like the view passed to step(), so the host reads them before re-sorting atoms.
+class SphereCoupling {
+ public:
+  SphereCoupling(lbm::FluidSolver& solver, const SphereCouplingOptions& options = {});
+
+  // Maps the spheres, refills uncovered nodes, runs the fluid step with the moving walls
+  // and stores the hydrodynamic force and torque on every particle of the view.
+  void step(const ParticleView& view);
+
+  // The stages, public so a host can time or reorder them; step() calls them in order.
+  void map_and_refill(const ParticleView& view);
+  void apply_moving_walls_and_force(const ParticleView& view);
+
+  const Vec3& force(std::size_t p) const { return loads_.force[p]; }
+  const Vec3& torque(std::size_t p) const { return loads_.torque[p]; }
+  const HydrodynamicLoads& loads() const { return loads_; }
+  // Adds the stored loads to 3-per-particle arrays (e.g. atom->f[0]); torque may be null.
+  void add_loads(std::size_t count, double* force, double* torque = nullptr) const;
+
+  const MassChange& last_mass_change() const { return mass_; }
+  const SphereLinks& links() const { return links_; }
+  const SphereMapping& mapping() const { return mapping_; }
+  const StageTimes& times() const { return times_; }
+  const SphereCouplingOptions& options() const { return options_; }
+  lbm::FluidSolver& solver() { return solver_; }
+
+ private:
+  lbm::FluidSolver& solver_;
+  SphereCouplingOptions options_;
+  SphereMapping mapping_;
+  SphereLinks links_;
+  HydrodynamicLoads loads_;
+  MassChange mass_;
+  StageTimes times_;
+};
+
+}  // namespace coupling

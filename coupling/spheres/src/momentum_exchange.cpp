@@ -1,0 +1,43 @@
+#include "coupling/force/momentum_exchange.h"
+
+#include "lbm/d3q19.h"
+
+namespace coupling {
+
+namespace {
+template <bool kGalilean>
+void sum_links(const SphereLinks& sl, const lbm::FluidSolver& solver, HydrodynamicLoads& loads) {
+  using L = lbm::D3Q19;
+  const auto& layout = solver.layout();
+  const lbm::PopulationField& f = solver.populations();
+  for (std::size_t l = 0; l < sl.links.size(); ++l) {
+    const lbm::BoundaryLink& link = sl.links[l];
+    const int q = link.q;
+    const std::size_t wall = link.fluid_cell + layout.offset(L::c[q][0], L::c[q][1], L::c[q][2]);
+    const double out = f.at(q, link.fluid_cell);
+    const double back = f.at(L::opposite(q), wall);
+    const double sum = out + back;
+    Vec3 F{sum * L::c[q][0], sum * L::c[q][1], sum * L::c[q][2]};
+    if (kGalilean) {
+      const double diff = out - back;
+      for (int a = 0; a < 3; ++a) F[a] -= link.wall_velocity[a] * diff;
+    }
+    const int p = sl.particle[l];
+    Vec3& force = loads.force[p];
+    for (int a = 0; a < 3; ++a) force[a] += F[a];
+    const Vec3 t = cross(sl.arm[l], F);
+    Vec3& torque = loads.torque[p];
+    for (int a = 0; a < 3; ++a) torque[a] += t[a];
+  }
+}
+}  // namespace
+
+void add_momentum_exchange(const SphereLinks& links, MomentumExchange method,
+                           const lbm::FluidSolver& solver, HydrodynamicLoads& loads) {
+  if (method == MomentumExchange::kGalileanInvariant)
+    sum_links<true>(links, solver, loads);
+  else
+    sum_links<false>(links, solver, loads);
+}
+
+}  // namespace coupling

@@ -1,0 +1,73 @@
+#include "coupling/diagnostics/pore_diagnostics.h"
+
+#include <cmath>
+
+#include "lbm/macroscopic.h"
+
+namespace coupling {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+}
+
+Deposition deposited(const ParticleView& view, const std::vector<char>& bonded, const PoreRegion& pore,
+                     const DepositionCriteria& criteria, const lbm::Communicator& comm) {
+  double sums[2] = {0.0, 0.0};
+  const int a = pore.axis, b = (a + 1) % 3, c = (a + 2) % 3;
+  const int lo = std::min(b, c), hi = std::max(b, c);
+  for (std::size_t p = 0; p < view.num_owned; ++p) {
+    if (p >= bonded.size() || !bonded[p]) continue;
+    const Vec3 v = view.v(p);
+    if (std::sqrt(dot(v, v)) >= criteria.speed_threshold) continue;
+    const Vec3 x = view.x(p);
+    if (x[a] < pore.start || x[a] > pore.end) continue;
+    const double d0 = x[lo] - pore.centre[0], d1 = x[hi] - pore.centre[1];
+    if (d0 * d0 + d1 * d1 > 0.25 * pore.diameter * pore.diameter) continue;
+    const double R = view.r(p);
+    sums[0] += 4.0 / 3.0 * kPi * R * R * R;
+    sums[1] += 1.0;
+  }
+  comm.sum(sums, 2);
+  Deposition d;
+  d.volume = sums[0];
+  d.count = (long long)std::llround(sums[1]);
+  d.length = pore.diameter > 0.0 ? d.volume / (kPi * pore.diameter * pore.diameter / 4.0) : 0.0;
+  return d;
+}
+
+PlaneCrossingCounter::Crossings PlaneCrossingCounter::update(const ParticleView& view, double box_length,
+                                                             const lbm::Communicator& comm) {
+  double sums[2] = {0.0, 0.0};
+  std::unordered_map<int, double> now;
+  now.reserve(view.num_owned);
+  for (std::size_t p = 0; p < view.num_owned; ++p) {
+    const int id = view.identifier(p);
+    const double x = view.x(p)[axis_];
+    now[id] = x;
+    const auto it = previous_.find(id);
+    if (it == previous_.end()) continue;
+    const double x0 = it->second;
+    if (box_length > 0.0 && std::abs(x - x0) > 0.5 * box_length) continue;  // periodic wrap
+    int sign = 0;
+    if (x0 < position_ && x >= position_) sign = +1;
+    if (x0 >= position_ && x < position_) sign = -1;
+    if (sign == 0) continue;
+    const double R = view.r(p);
+    sums[0] += sign;
+    sums[1] += sign * 4.0 / 3.0 * kPi * R * R * R;
+  }
+  previous_ = std::move(now);
+  comm.sum(sums, 2);
+  Crossings c;
+  c.count = (long long)std::llround(sums[0]);
+  c.volume = sums[1];
+  return c;
+}
+
+double fluid_flux(const lbm::FluidSolver& solver, int axis, int index) {
+  return lbm::plane_flux(solver, axis, index);
+}
+
+double pressure_loss(const lbm::FluidSolver& solver) { return lbm::pressure_loss(solver); }
+
+}  // namespace coupling

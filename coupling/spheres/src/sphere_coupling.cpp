@@ -1,0 +1,85 @@
+#include "coupling/sphere_coupling.h"
+
+#include <cmath>
+
+#include "lbm/input_error.h"
+
+namespace coupling {
+
+namespace {
+class StageTimer {
+ public:
+  explicit StageTimer(double& total) : total_(total), start_(std::chrono::steady_clock::now()) {}
+  ~StageTimer() {
+    total_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  }
+
+ private:
+  double& total_;
+  std::chrono::steady_clock::time_point start_;
+};
+}  // namespace
+
+SphereCoupling::SphereCoupling(lbm::FluidSolver& solver, const SphereCouplingOptions& options)
+    : solver_(solver),
+      options_(options),
+      mapping_(solver.layout(), PeriodicBox::from(solver.decomposition())) {
+  const double tau = 1.0 / solver.trt().omega_plus;
+  if (options.wall_scheme == MovingWallScheme::kMeiLuoShyy && std::abs(tau - 2.0) < 0.2)
+    throw lbm::InputError("moving walls: the Mei-Luo-Shyy scheme needs tau away from 2 "
+                          "(|tau - 2| >= 0.2), got tau = " + std::to_string(tau) +
+                          "; choose another tau or the Bouzidi scheme");
+}
+
+void SphereCoupling::map_and_refill(const ParticleView& view) {
+  MappingChange change;
+  {
+    StageTimer t(times_.mapping);
+    change = mapping_.update(view, solver_.node_types());
+  }
+  {
+    StageTimer t(times_.refill);
+    mass_ = refill_uncovered(change, mapping_, view, options_.refill, solver_);
+  }
+  mapping_.commit(change, solver_.node_types());
+}
+
+void SphereCoupling::apply_moving_walls_and_force(const ParticleView& view) {
+  {
+    StageTimer t(times_.moving_walls);
+    build_sphere_links(mapping_, view, solver_.node_types(), links_);
+    apply_moving_walls(links_, options_.wall_scheme, solver_);
+  }
+  StageTimer t(times_.force);
+  loads_.reset(view.num_total);
+  add_momentum_exchange(links_, options_.momentum_exchange, solver_, loads_);
+}
+
+void SphereCoupling::step(const ParticleView& view) {
+  map_and_refill(view);
+  {
+    StageTimer t(times_.halo);
+    solver_.exchange_halo();
+  }
+  {
+    StageTimer t(times_.static_walls);
+    solver_.apply_wall_bounce_back();
+  }
+  apply_moving_walls_and_force(view);
+  {
+    StageTimer t(times_.open_boundaries);
+    solver_.apply_open_boundaries();
+  }
+  StageTimer t(times_.collide_stream);
+  solver_.collide_stream();
+}
+
+void SphereCoupling::add_loads(std::size_t count, double* force, double* torque) const {
+  for (std::size_t p = 0; p < count && p < loads_.force.size(); ++p)
+    for (int a = 0; a < 3; ++a) {
+      force[3 * p + a] += loads_.force[p][a];
+      if (torque) torque[3 * p + a] += loads_.torque[p][a];
+    }
+}
+
+}  // namespace coupling
