@@ -19,10 +19,16 @@ class HaloExchange {
   void exchange_scalar(std::vector<double>& values);
 
  private:
-  const Decomposition* decomposition_;
+  // One sweep along `axis` over `components` arrays of num_cells() values each.
+  template <class T>
+  void sweep(int axis, T* const* arrays, int components);
+  template <class T>
+  void exchange_arrays(T* const* arrays, int components);
+  void check_neighbours() const;
+
+  Decomposition decomposition_;  // a copy: callers may pass a temporary
   BlockLayout layout_;
   std::vector<double> send_low_, send_high_, recv_low_, recv_high_;
-  void sweep(int axis, int components, std::vector<double*>& arrays_by_component);
 };
 
 }  // namespace lbm

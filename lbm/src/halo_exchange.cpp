@@ -1,0 +1,177 @@
+#include "lbm/halo_exchange.h"
+
+#include <algorithm>
+#include <array>
+#include <string>
+
+#include "lbm/d3q19.h"
+#include "lbm/input_error.h"
+
+namespace lbm {
+
+namespace {
+// Tags of the two directions of a sweep along `axis`; distinct, so the two messages cannot
+// be confused when one rank is both neighbours (two ranks on a periodic axis). The base
+// keeps clear of the small tags a host (LIGGGHTS) uses on the same communicator.
+constexpr int kTagBase = 0x4c42;
+int tag_up(int axis) { return kTagBase + 2 * axis; }
+int tag_down(int axis) { return kTagBase + 2 * axis + 1; }
+
+// The two axes other than `axis`, in increasing order; for the y and z sweeps the inner
+// one is x, so packing walks memory contiguously.
+std::array<int, 2> other_axes(int axis) {
+  return axis == 0 ? std::array<int, 2>{1, 2}
+                   : (axis == 1 ? std::array<int, 2>{0, 2} : std::array<int, 2>{0, 1});
+}
+
+// Visits the cells of the padded plane with local index `plane` normal to `axis`, the
+// full padded extent of the other two axes (ghosts included), in a fixed order that the
+// sender and the receiver share.
+template <class Visit>
+void for_plane(const BlockLayout& layout, int axis, int plane, Visit visit) {
+  const std::array<std::size_t, 3> stride{
+      1, std::size_t(layout.padded(0)), std::size_t(layout.padded(0)) * layout.padded(1)};
+  const auto [b, c] = other_axes(axis);
+  const std::size_t base = std::size_t(plane + BlockLayout::kGhost) * stride[axis];
+  std::size_t n = 0;
+  for (int v = 0; v < layout.padded(c); ++v)
+    for (int u = 0; u < layout.padded(b); ++u, ++n) visit(n, base + v * stride[c] + u * stride[b]);
+}
+}  // namespace
+
+HaloExchange::HaloExchange(const Decomposition& decomposition, const BlockLayout& layout)
+    : decomposition_(decomposition), layout_(layout) {
+  // Along an axis this rank owns entirely there is no other rank to talk to: the neighbour
+  // is this rank if the axis is periodic, none otherwise. Deriving it here keeps the halo
+  // consistent with `periodic` even if the caller left `neighbor` at its default.
+  const int self = decomposition_.comm.rank();
+  for (int a = 0; a < 3; ++a)
+    if (decomposition_.owned.lo[a] == decomposition_.global.lo[a] &&
+        decomposition_.owned.hi[a] == decomposition_.global.hi[a])
+      decomposition_.neighbor[a] = decomposition_.periodic[a] ? std::array<int, 2>{self, self}
+                                                              : std::array<int, 2>{-1, -1};
+  std::size_t largest_plane = 0;
+  for (int a = 0; a < 3; ++a) {
+    const auto [b, c] = other_axes(a);
+    largest_plane = std::max(largest_plane, std::size_t(layout_.padded(b)) * layout_.padded(c));
+  }
+  // Sized for 19 populations; exchange_scalar uses a slice of them.
+  const std::size_t capacity = largest_plane * D3Q19::Q;
+  send_low_.assign(capacity, 0.0);
+  send_high_.assign(capacity, 0.0);
+  recv_low_.assign(capacity, 0.0);
+  recv_high_.assign(capacity, 0.0);
+  check_neighbours();
+}
+
+// Face neighbours must share this rank's extent in the other two axes and touch it along
+// the sweep axis, otherwise packed planes would not line up; a host that builds the
+// decomposition by hand gets a message instead of silently wrong ghosts.
+void HaloExchange::check_neighbours() const {
+  const Decomposition& d = decomposition_;
+  const int self = d.comm.rank();
+  double mine[6], below[6], above[6];
+  for (int a = 0; a < 3; ++a) {
+    mine[a] = d.owned.lo[a];
+    mine[3 + a] = d.owned.hi[a];
+  }
+  for (int a = 0; a < 3; ++a) {
+    const int lo = d.neighbor[a][0], hi = d.neighbor[a][1];
+    if (lo == self && hi == self) continue;
+    std::fill(below, below + 6, -1.0);
+    std::fill(above, above + 6, -1.0);
+    d.comm.sendrecv(mine, 6, hi, below, 6, lo, tag_up(a));
+    d.comm.sendrecv(mine, 6, lo, above, 6, hi, tag_down(a));
+    const int n = d.global.size(a);
+    for (int side = 0; side < 2; ++side) {
+      const int other = d.neighbor[a][side];
+      if (other < 0) continue;
+      const double* box = side == 0 ? below : above;
+      // Along `a` the neighbour's box ends where ours starts (or wraps around periodically).
+      const int expected = side == 0 ? d.owned.lo[a] : d.owned.hi[a];
+      const int touching = side == 0 ? int(box[3 + a]) : int(box[a]);
+      bool ok = touching == expected || (touching - expected) % n == 0;
+      const auto [b, c] = other_axes(a);
+      for (int t : {b, c}) ok = ok && box[t] == mine[t] && box[3 + t] == mine[3 + t];
+      if (!ok)
+        throw InputError("halo exchange: rank " + std::to_string(self) + " and its " +
+                         (side == 0 ? "lower" : "upper") + " neighbour rank " +
+                         std::to_string(other) + " along " + std::string(1, "xyz"[a]) +
+                         " do not share a face (face neighbours must touch and have the "
+                         "same extent in the other two axes)");
+    }
+  }
+}
+
+template <class T>
+void HaloExchange::sweep(int axis, T* const* arrays, int components) {
+  const Decomposition& d = decomposition_;
+  const int n = layout_.size(axis);
+  const int self = d.comm.rank();
+  const int lo = d.neighbor[axis][0], hi = d.neighbor[axis][1];
+  if (lo == self && hi == self) {
+    // Periodic axis owned by this rank alone: ghosts are copies of the opposite face.
+    // Distance between a ghost plane and the owned plane it copies.
+    const std::ptrdiff_t shift =
+        std::ptrdiff_t(n) * layout_.offset(axis == 0, axis == 1, axis == 2);
+    for (int m = 0; m < components; ++m) {
+      T* f = arrays[m];
+      for_plane(layout_, axis, -1, [&](std::size_t, std::size_t ghost) { f[ghost] = f[ghost + shift]; });
+      for_plane(layout_, axis, n, [&](std::size_t, std::size_t ghost) { f[ghost] = f[ghost - shift]; });
+    }
+    return;
+  }
+  const auto [b, c] = other_axes(axis);
+  const std::size_t plane = std::size_t(layout_.padded(b)) * layout_.padded(c);
+  // Pack: the lowest owned plane goes down, the highest owned plane goes up.
+  for (int m = 0; m < components; ++m) {
+    const T* f = arrays[m];
+    double* low = send_low_.data() + m * plane;
+    double* high = send_high_.data() + m * plane;
+    for_plane(layout_, axis, 0, [&](std::size_t i, std::size_t cell) { low[i] = double(f[cell]); });
+    for_plane(layout_, axis, n - 1,
+              [&](std::size_t i, std::size_t cell) { high[i] = double(f[cell]); });
+  }
+  const int count = int(plane) * components;
+  // Upward: our top plane to the rank above, the low ghost from the rank below; then down.
+  d.comm.sendrecv(send_high_.data(), count, hi, recv_low_.data(), count, lo, tag_up(axis));
+  d.comm.sendrecv(send_low_.data(), count, lo, recv_high_.data(), count, hi, tag_down(axis));
+  // Unpack, leaving ghosts at a non-periodic domain edge (no neighbour) untouched.
+  for (int m = 0; m < components; ++m) {
+    T* f = arrays[m];
+    if (lo >= 0) {
+      const double* low = recv_low_.data() + m * plane;
+      for_plane(layout_, axis, -1, [&](std::size_t i, std::size_t cell) { f[cell] = T(low[i]); });
+    }
+    if (hi >= 0) {
+      const double* high = recv_high_.data() + m * plane;
+      for_plane(layout_, axis, n, [&](std::size_t i, std::size_t cell) { f[cell] = T(high[i]); });
+    }
+  }
+}
+
+template <class T>
+void HaloExchange::exchange_arrays(T* const* arrays, int components) {
+  // x, then y, then z: each later sweep carries the ghosts the earlier ones filled, so
+  // edge and corner ghosts arrive without diagonal messages.
+  for (int axis = 0; axis < 3; ++axis) sweep(axis, arrays, components);
+}
+
+void HaloExchange::exchange(PopulationField& field) {
+  if (field.num_cells() != layout_.num_cells())
+    throw InputError("halo exchange: population field does not match the block layout");
+  // All 19 populations travel: boundary stages (interpolated bounce-back, refill) may read
+  // any population of a ghost, not only those streaming across the face.
+  std::array<Real*, D3Q19::Q> arrays;
+  for (int q = 0; q < D3Q19::Q; ++q) arrays[q] = field.q(q);
+  exchange_arrays(arrays.data(), D3Q19::Q);
+}
+
+void HaloExchange::exchange_scalar(std::vector<double>& values) {
+  if (values.size() != layout_.num_cells())
+    throw InputError("halo exchange: scalar field does not match the block layout");
+  double* arrays[1] = {values.data()};
+  exchange_arrays(arrays, 1);
+}
+
+}  // namespace lbm
