@@ -76,6 +76,8 @@ TEST(DragArray, OtherSchemesForComparison) {
     std::printf("SC array chi=0.5 d= 8 %s: K = %.4f (error %+.2f %%), F_me/(g N_fluid) = %.5f, %.2f s\n",
                 to_string(scheme), r.K, 100 * error, r.force_balance, r.seconds);
     EXPECT_NEAR(r.force_balance, 1.0, 1e-3);
-    EXPECT_LT(std::abs(error), scheme == MovingWallScheme::kBounceBack ? 0.15 : 0.05);
+    // Measured at d = 8: Bouzidi -2.8 %, bounce-back +2.6 % (its errors do not shrink
+    // systematically with resolution, the wall sits mid-link whatever the fraction).
+    EXPECT_LT(std::abs(error), 0.04);
   }
 }

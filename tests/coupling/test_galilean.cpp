@@ -68,8 +68,10 @@ TEST(GalileanInvariance, MovingSphereFeelsTheSameDragAsFixedSphereInMovingFluid)
   std::printf("Galilean (MLS, Wen et al. momentum exchange), d = 8, U = 0.02, 8 cells travelled: "
               "mean drag %.4e, moving vs fixed %+.2f %%, rms fluctuation %.2f %%, %.2f s\n",
               c.mean_B, 100 * c.mean_error, 100 * c.fluctuation, watch.seconds());
-  EXPECT_LT(std::abs(c.mean_error), 0.03);
-  EXPECT_LT(c.fluctuation, 0.05);
+  // Measured +0.07 % and 0.32 % rms (plain momentum exchange +0.08 %, Bouzidi +0.10 %,
+  // 0.26 %): bounds 0.5 % and 1 %.
+  EXPECT_LT(std::abs(c.mean_error), 0.005);
+  EXPECT_LT(c.fluctuation, 0.01);
 }
 
 TEST(GalileanInvariance, PlainMomentumExchangeForComparison) {
