@@ -185,6 +185,7 @@ bool write_piece(const FluidSolver& solver, const PaddedFields& fields, const in
   writer->SetDataModeToAppended();
   writer->EncodeAppendedDataOff();
   writer->SetCompressorTypeToZLib();
+  writer->SetHeaderTypeToUInt64();  // as declared in the .pvti
   return writer->Write() == 1;
 }
 

@@ -1,0 +1,78 @@
+#pragma once
+// A known field for halo tests: population q at global node g holds
+// ((q * 32 + gx) * 32 + gy) * 32 + gz, exact in float as long as every axis has < 32
+// nodes. Ghosts start at a sentinel; after an exchange a ghost must hold the value of its
+// periodic image, or still the sentinel beyond a non-periodic face.
+#include <array>
+#include <vector>
+
+#include "lbm/block_layout.h"
+#include "lbm/d3q19.h"
+#include "lbm/decomposition.h"
+#include "lbm/population_field.h"
+
+namespace lbm_parallel_test {
+
+constexpr double kSentinel = -7.0;
+
+inline double pattern(int q, const std::array<int, 3>& g) {
+  return ((q * 32.0 + g[0]) * 32.0 + g[1]) * 32.0 + g[2];
+}
+
+// The value a cell must hold after an exchange (owned cells keep theirs).
+inline double expected(int q, const lbm::Decomposition& d, const lbm::BlockLayout& layout,
+                       int i, int j, int k) {
+  std::array<int, 3> g = layout.to_global(i, j, k);
+  for (int a = 0; a < 3; ++a) {
+    if (g[a] >= d.global.lo[a] && g[a] < d.global.hi[a]) continue;
+    if (!d.periodic[a]) return kSentinel;
+    const int n = d.global.size(a);
+    g[a] = (g[a] - d.global.lo[a] + n) % n + d.global.lo[a];
+  }
+  return pattern(q, g);
+}
+
+inline void fill(lbm::PopulationField& f, const lbm::BlockLayout& layout) {
+  for (int k = -1; k <= layout.size(2); ++k)
+    for (int j = -1; j <= layout.size(1); ++j)
+      for (int i = -1; i <= layout.size(0); ++i)
+        for (int q = 0; q < lbm::D3Q19::Q; ++q)
+          f.at(q, layout.cell(i, j, k)) = static_cast<lbm::Real>(
+              layout.is_owned(i, j, k) ? pattern(q, layout.to_global(i, j, k)) : kSentinel);
+}
+
+// Number of cells x populations that differ from expected().
+inline long long mismatches(const lbm::PopulationField& f, const lbm::Decomposition& d,
+                            const lbm::BlockLayout& layout) {
+  long long bad = 0;
+  for (int k = -1; k <= layout.size(2); ++k)
+    for (int j = -1; j <= layout.size(1); ++j)
+      for (int i = -1; i <= layout.size(0); ++i)
+        for (int q = 0; q < lbm::D3Q19::Q; ++q)
+          if (double(f.at(q, layout.cell(i, j, k))) != expected(q, d, layout, i, j, k)) ++bad;
+  return bad;
+}
+
+// Same for one scalar per cell, holding pattern(0, g) + 0.5.
+inline std::vector<double> scalar_field(const lbm::BlockLayout& layout) {
+  std::vector<double> v(layout.num_cells(), kSentinel);
+  for (int k = 0; k < layout.size(2); ++k)
+    for (int j = 0; j < layout.size(1); ++j)
+      for (int i = 0; i < layout.size(0); ++i)
+        v[layout.cell(i, j, k)] = pattern(0, layout.to_global(i, j, k)) + 0.5;
+  return v;
+}
+
+inline long long scalar_mismatches(const std::vector<double>& v, const lbm::Decomposition& d,
+                                   const lbm::BlockLayout& layout) {
+  long long bad = 0;
+  for (int k = -1; k <= layout.size(2); ++k)
+    for (int j = -1; j <= layout.size(1); ++j)
+      for (int i = -1; i <= layout.size(0); ++i) {
+        const double e = expected(0, d, layout, i, j, k);
+        if (v[layout.cell(i, j, k)] != (e == kSentinel ? e : e + 0.5)) ++bad;
+      }
+  return bad;
+}
+
+}  // namespace lbm_parallel_test

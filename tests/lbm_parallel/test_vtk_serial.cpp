@@ -1,0 +1,119 @@
+// VTK series on one rank: the image read back has the global extent, physical origin and
+// spacing, and the values of compute_fields; the .pvd lists every file with its time.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include "flow_setup.h"
+#include "lbm/decomposition.h"
+#include "lbm/input_error.h"
+#include "lbm/macroscopic.h"
+#include "lbm/vtk_output.h"
+
+#ifdef LBM_PORE_HAVE_VTK
+#include <vtkDataArray.h>
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkXMLImageDataReader.h>
+#endif
+
+namespace {
+using namespace lbm_parallel_test;
+
+std::string read_text(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+#ifdef LBM_PORE_HAVE_VTK
+
+TEST(VtkSeries, SerialImageRoundTrip) {
+  const FlowCase c = body_force_channel();
+  lbm::Box global;
+  global.hi = c.geometry.dims();
+  lbm::FluidSolver solver(c.geometry, c.parameters, c.drive,
+                          lbm::Decomposition::serial(global, c.parameters.periodic));
+  start(solver);
+  for (int s = 0; s < 10; ++s) solver.step();
+
+  const std::filesystem::path dir = std::filesystem::path("vtk_serial_out") / "nested";
+  std::filesystem::remove_all("vtk_serial_out");
+  lbm::VtkSeriesWriter writer(dir.string(), "fluid");
+  writer.write(solver, 0.25);
+  const lbm::MacroscopicFields fields = lbm::compute_fields(solver);
+  for (int s = 0; s < 5; ++s) solver.step();
+  writer.write(solver, 0.375);
+
+  vtkNew<vtkXMLImageDataReader> reader;
+  reader->SetFileName((dir / "fluid_000010.vti").string().c_str());
+  reader->Update();
+  vtkImageData* image = reader->GetOutput();
+  int extent[6];
+  image->GetExtent(extent);
+  EXPECT_EQ(extent[0], 0);
+  EXPECT_EQ(extent[1], 11);
+  EXPECT_EQ(extent[2], 0);
+  EXPECT_EQ(extent[3], 9);
+  EXPECT_EQ(extent[4], 0);
+  EXPECT_EQ(extent[5], 5);
+  double origin[3], spacing[3];
+  image->GetOrigin(origin);
+  image->GetSpacing(spacing);
+  for (int a = 0; a < 3; ++a) {
+    EXPECT_DOUBLE_EQ(origin[a], c.geometry.origin()[a]);
+    EXPECT_DOUBLE_EQ(spacing[a], 0.1);
+  }
+  vtkDataArray* density = image->GetPointData()->GetArray("density");
+  vtkDataArray* pressure = image->GetPointData()->GetArray("pressure");
+  vtkDataArray* velocity = image->GetPointData()->GetArray("velocity");
+  vtkDataArray* node_type = image->GetPointData()->GetArray("node_type");
+  ASSERT_TRUE(density && pressure && velocity && node_type);
+  ASSERT_EQ(density->GetNumberOfTuples(), vtkIdType(fields.density.size()));
+  ASSERT_EQ(velocity->GetNumberOfComponents(), 3);
+  int solid = 0;
+  for (vtkIdType n = 0; n < density->GetNumberOfTuples(); ++n) {
+    EXPECT_EQ(density->GetTuple1(n), fields.density[n]);
+    EXPECT_DOUBLE_EQ(pressure->GetTuple1(n), fields.density[n] / 3.0);
+    for (int a = 0; a < 3; ++a) EXPECT_EQ(velocity->GetComponent(n, a), fields.velocity[3 * n + a]);
+    EXPECT_EQ(node_type->GetTuple1(n), fields.node_type[n]);
+    solid += node_type->GetTuple1(n) == lbm::kSolid;
+  }
+  EXPECT_EQ(solid, int(c.geometry.count_solid()));
+  // The point (i,j,k) is node (i,j,k) of the geometry: spot-check a solid voxel.
+  const vtkIdType voxel = image->ComputePointId(std::array<int, 3>{9, 7, 1}.data());
+  EXPECT_EQ(node_type->GetTuple1(voxel), lbm::kSolid);
+
+  const std::string pvd = read_text(dir / "fluid.pvd");
+  const std::regex entry("<DataSet timestep=\"([^\"]+)\"[^>]*file=\"([^\"]+)\"");
+  std::vector<std::pair<double, std::string>> listed;
+  for (auto it = std::sregex_iterator(pvd.begin(), pvd.end(), entry); it != std::sregex_iterator(); ++it)
+    listed.emplace_back(std::stod((*it)[1]), (*it)[2]);
+  ASSERT_EQ(listed.size(), 2u) << pvd;
+  EXPECT_EQ(listed[0], (std::pair<double, std::string>{0.25, "fluid_000010.vti"}));
+  EXPECT_EQ(listed[1], (std::pair<double, std::string>{0.375, "fluid_000015.vti"}));
+  EXPECT_TRUE(std::filesystem::exists(dir / "fluid_000015.vti"));
+}
+
+TEST(VtkSeries, AvailableWithVtk) { EXPECT_TRUE(lbm::VtkSeriesWriter::available()); }
+
+#else
+
+TEST(VtkSeries, ConstructorSaysVtkIsNeeded) {
+  EXPECT_FALSE(lbm::VtkSeriesWriter::available());
+  try {
+    lbm::VtkSeriesWriter writer("out", "fluid");
+    FAIL() << "no exception";
+  } catch (const lbm::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("needs VTK"), std::string::npos);
+  }
+}
+
+#endif
+
+}  // namespace
