@@ -71,8 +71,6 @@ TEST(Lubrication, SphereApproachingAWallFollowsBrenner) {
     double F[3] = {0, 0, 0};
     lub.add_forces(particles.view(), box, wall, F);
     const double total = coupling.force(0)[1] + F[1];
-    if (std::getenv("LUB_DEBUG") && gap < 1.0 && t % 10 == 0)
-      std::printf("gap %.3f lattice %.4f lub %.4f\n", gap, coupling.force(0)[1], F[1]);
     history.push_back({gap / R, total / (6 * sphere_cases::kPi * mu * R * U)});
   }
   // Brenner (1961), REFERENCES.md.
@@ -84,9 +82,11 @@ TEST(Lubrication, SphereApproachingAWallFollowsBrenner) {
     const double increase = lambda - lambda_ref, increase_ref = brenner[i] - brenner[0];
     std::printf("sphere-wall d=8 delta/a=%.2f: lambda %.3f (Brenner %.3f), increase over delta=a "
                 "%.3f (Brenner %.3f)\n", deltas[i], lambda, brenner[i], increase, increase_ref);
-    if (i >= 2) {
-      EXPECT_NEAR(increase / increase_ref, 1.0, 0.25) << "delta/a = " << deltas[i];
-    }
+    // Measured (d = 8, box 24x28x24, U = 0.004, Re = 0.19): lambda/lambda_Brenner - 1 =
+    // +8.6 %, +0.5 %, -10.7 %, -8.8 %, -7.5 %, -4.3 %, -7.8 % for delta/a = 1 ... 0.01
+    // (finite box and unsteadiness at large gaps, one-cell gap resolution near h_c):
+    // bound 15 %.
+    EXPECT_NEAR(lambda / brenner[i], 1.0, 0.15) << "delta/a = " << deltas[i];
   }
   std::printf("sphere-wall: %zu steps, %.2f s\n", history.size(), watch.seconds());
 }
@@ -119,5 +119,8 @@ TEST(Lubrication, TwoSpheresApproachingFollowTheSqueezeLaw) {
   std::printf("two spheres d=8: lambda(delta/a=1) %.3f, (0.1) %.3f (ref 4.6255), (0.01) %.3f (ref 28.114); "
               "increase 0.1->0.01 %.3f (ref %.3f); %zu steps, %.2f s\n",
               l1, l01, l001, increase, increase_ref, history.size(), watch.seconds());
-  EXPECT_NEAR(increase / increase_ref, 1.0, 0.15);
+  // Measured: -2.3 % at delta/a = 0.1, +1.6 % at 0.01, increase +2.4 %: bound 5 %.
+  EXPECT_NEAR(l01 / 4.6255, 1.0, 0.05);
+  EXPECT_NEAR(l001 / 28.114, 1.0, 0.05);
+  EXPECT_NEAR(increase / increase_ref, 1.0, 0.05);
 }

@@ -10,13 +10,18 @@ void sum_links(const SphereLinks& sl, const lbm::FluidSolver& solver, Hydrodynam
   using L = lbm::D3Q19;
   const auto& layout = solver.layout();
   const lbm::PopulationField& f = solver.populations();
+  const double rho0 = solver.parameters().rho0;
   for (std::size_t l = 0; l < sl.links.size(); ++l) {
     const lbm::BoundaryLink& link = sl.links[l];
     const int q = link.q;
     const std::size_t wall = link.fluid_cell + layout.offset(L::c[q][0], L::c[q][1], L::c[q][2]);
     const double out = f.at(q, link.fluid_cell);
     const double back = f.at(L::opposite(q), wall);
-    const double sum = out + back;
+    // The reference pressure's share 2 w_q rho0 is removed per link: over a closed link set
+    // it sums to zero exactly (as many links along +c_q as along -c_q), but where a sphere
+    // touches a wall or another sphere and its covered nodes lose their fluid neighbours
+    // it would act as the pressure p0 = rho0/3 on one side only ("void as vacuum").
+    const double sum = out + back - 2.0 * L::w[q] * rho0;
     Vec3 F{sum * L::c[q][0], sum * L::c[q][1], sum * L::c[q][2]};
     if (kGalilean) {
       const double diff = out - back;

@@ -28,6 +28,9 @@ struct HydrodynamicLoads {
   }
 };
 
+// Both forms use the gauge populations, 2 w_q rho0 subtracted per link (exact no-op for a
+// sphere surrounded by fluid; removes the spurious p0 push where its surface has no fluid
+// links, i.e. in contact with a wall or another sphere).
 // Sums over the links (all from owned fluid nodes, so ghost layers never double count),
 // after the moving-wall stage filled the returning populations and before collide_stream.
 // Torque arm: the cut point on the surface.
