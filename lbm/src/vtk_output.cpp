@@ -44,11 +44,17 @@ std::string step_name(const std::string& prefix, long long step) {
   return prefix + "_" + digits;
 }
 
+// The shortest of 15..17 significant digits that reads back as the same double.
 std::string number(double value) {
-  std::ostringstream out;
-  out.precision(17);
-  out << value;
-  return out.str();
+  std::string text;
+  for (int digits = 15; digits <= 17; ++digits) {
+    std::ostringstream out;
+    out.precision(digits);
+    out << value;
+    text = out.str();
+    if (std::stod(text) == value) break;
+  }
+  return text;
 }
 
 // Writes `text` to `path` through a temporary file and a rename, so ParaView never reads a
