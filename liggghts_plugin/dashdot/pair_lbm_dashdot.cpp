@@ -1,0 +1,242 @@
+#include "pair_lbm_dashdot.h"
+
+#include <mpi.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <string>
+
+#include "atom.h"
+#include "comm.h"
+#include "contact/dash_dot.h"
+#include "error.h"
+#include "fix.h"
+#include "force.h"
+#include "memory.h"
+#include "modify.h"
+#include "neigh_list.h"
+#include "neigh_request.h"
+#include "neighbor.h"
+#include "plugin_common/parse_number.h"
+#include "update.h"
+
+using namespace LAMMPS_NS;
+
+namespace {
+// At least this many steps must resolve a contact (REFERENCES.md: dt <= t_c / 10).
+constexpr double kMinStepsPerContact = 10.0;
+}  // namespace
+
+PairLbmDashdot::PairLbmDashdot(LAMMPS* lmp) : Pair(lmp) {
+  single_enable = 0;
+  restartinfo = 0;
+}
+
+PairLbmDashdot::~PairLbmDashdot() {
+  if (allocated) {
+    memory->destroy(setflag);
+    memory->destroy(cutsq);
+  }
+}
+
+void PairLbmDashdot::allocate() {
+  allocated = 1;
+  const int n = atom->ntypes;
+  memory->create(setflag, n + 1, n + 1, "pair:setflag");
+  memory->create(cutsq, n + 1, n + 1, "pair:cutsq");
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j) setflag[i][j] = 0;
+  params_.assign(n + 1, std::vector<contact::PairContactParams>(n + 1, defaults_));
+  max_radius_.assign(n + 1, 0.0);
+}
+
+void PairLbmDashdot::parse_coefficients(int first, int narg, char** arg,
+                                        contact::PairContactParams& params,
+                                        const char* command) {
+  using lbm_pore::parse_number;
+  for (int iarg = first; iarg < narg; iarg += 2) {
+    const std::string key = arg[iarg];
+    if (iarg + 1 >= narg)
+      error->all(FLERR, (std::string(command) + ": keyword '" + key + "' needs a value").c_str());
+    const char* value = arg[iarg + 1];
+    if (key == "kn") {
+      params.normal.k_n = parse_number(error, command, "kn", value, 0.0, false, 1e300);
+    } else if (key == "kc") {
+      params.cohesion.k_c = parse_number(error, command, "kc", value, 0.0, true, 1e300);
+    } else if (key == "damping") {
+      params.normal.damping_ratio = parse_number(error, command, "damping", value, 0.0, true, 1.0);
+    } else {
+      error->all(FLERR, (std::string(command) + ": unknown keyword '" + key +
+                         "' (expected kn, kc or damping)")
+                            .c_str());
+    }
+  }
+}
+
+void PairLbmDashdot::settings(int narg, char** arg) {
+  defaults_ = contact::PairContactParams{};
+  parse_coefficients(0, narg, arg, defaults_, "pair_style lbm/dashdot");
+}
+
+void PairLbmDashdot::coeff(int narg, char** arg) {
+  if (narg < 2) error->all(FLERR, "pair_coeff lbm/dashdot: expected 'pair_coeff I J [kn v] [kc v] [damping v]'");
+  if (!allocated) allocate();
+  int ilo, ihi, jlo, jhi;
+  force->bounds(arg[0], atom->ntypes, ilo, ihi);
+  force->bounds(arg[1], atom->ntypes, jlo, jhi);
+  contact::PairContactParams params = defaults_;
+  parse_coefficients(2, narg, arg, params, "pair_coeff lbm/dashdot");
+  int count = 0;
+  for (int i = ilo; i <= ihi; ++i)
+    for (int j = std::max(jlo, i); j <= jhi; ++j) {
+      params_[i][j] = params_[j][i] = params;
+      setflag[i][j] = 1;
+      ++count;
+    }
+  if (count == 0) error->all(FLERR, "pair_coeff lbm/dashdot: no atom types in the given range");
+}
+
+void PairLbmDashdot::init_style() {
+  if (!atom->radius_flag || !atom->rmass_flag)
+    error->all(FLERR, "pair_style lbm/dashdot needs per-atom radius and mass (atom_style granular or sphere)");
+  if (comm->ghost_velocity == 0)
+    error->all(FLERR, "pair_style lbm/dashdot needs ghost velocities: add 'communicate single vel yes'");
+
+  // A granular half list: pairs within (Ri + Rj) * contactDistanceFactor + skin.
+  const int request = neighbor->request(this);
+  neighbor->requests[request]->half = 0;
+  neighbor->requests[request]->gran = 1;
+
+  // Cohesion reaches 0.03 (Ri + Rj) beyond contact: widen the neighbour search by that
+  // factor (only when some pair is cohesive; "leave out what a scene does not need").
+  double range_factor = 0.0;
+  for (int i = 1; i <= atom->ntypes; ++i)
+    for (int j = i; j <= atom->ntypes; ++j)
+      if (params_[i][j].cohesion.k_c > 0.0)
+        range_factor = std::max(range_factor, params_[i][j].cohesion.range_factor);
+  distance_factor_ = 1.0 + range_factor;
+  neighbor->register_contact_dist_factor(distance_factor_);
+
+  find_max_radius_per_type();
+  check_time_step();
+}
+
+void PairLbmDashdot::find_max_radius_per_type() {
+  // Particles inserted later (fix insert/..., fix pour) announce their largest radius, as the
+  // stock granular pair styles use it; particles present now are scanned.
+  const int ntypes = atom->ntypes;
+  std::vector<double> local(ntypes + 1, 0.0);
+  for (int f = 0; f < modify->nfix; ++f) {
+    if (!modify->fix[f]->use_rad_for_cut_neigh_and_ghost()) continue;
+    for (int t = 1; t <= ntypes; ++t) local[t] = std::max(local[t], modify->fix[f]->max_rad(t));
+  }
+  for (int i = 0; i < atom->nlocal; ++i)
+    local[atom->type[i]] = std::max(local[atom->type[i]], atom->radius[i]);
+  MPI_Allreduce(local.data(), max_radius_.data(), ntypes + 1, MPI_DOUBLE, MPI_MAX, world);
+}
+
+void PairLbmDashdot::check_time_step() {
+  // The lightest pair of particles present has the shortest contact; refuse a step that
+  // resolves it with fewer than kMinStepsPerContact steps (t_c of paper Eq. 1 with damping).
+  double local_min_mass = 1e300;
+  for (int i = 0; i < atom->nlocal; ++i) local_min_mass = std::min(local_min_mass, atom->rmass[i]);
+  double min_mass = 0.0;
+  MPI_Allreduce(&local_min_mass, &min_mass, 1, MPI_DOUBLE, MPI_MIN, world);
+  if (min_mass >= 1e300) return;  // no particles yet
+  double worst_tc = 1e300;
+  contact::DashDotParams worst;
+  for (int i = 1; i <= atom->ntypes; ++i)
+    for (int j = i; j <= atom->ntypes; ++j) {
+      const double tc = contact::contact_duration(params_[i][j].normal, 0.5 * min_mass);
+      if (tc < worst_tc) { worst_tc = tc; worst = params_[i][j].normal; }
+    }
+  const double dt_max = worst_tc / kMinStepsPerContact;
+  if (update->dt > dt_max) {
+    char message[512];
+    std::snprintf(message, sizeof message,
+                  "pair_style lbm/dashdot: timestep %g is too large for kn = %g: the contact "
+                  "time of the lightest particles (mass %g) is t_c = %g, and a contact needs "
+                  "at least %g steps; use timestep <= %g or a smaller kn",
+                  update->dt, worst.k_n, min_mass, worst_tc, kMinStepsPerContact, dt_max);
+    error->all(FLERR, message);
+  }
+}
+
+double PairLbmDashdot::init_one(int i, int j) {
+  if (setflag[i][j] == 0) {
+    // Unset pairs take the pair_style defaults (no mixing rule is needed: one set per pair).
+    params_[i][j] = params_[j][i] = defaults_;
+  }
+  return (max_radius_[i] + max_radius_[j]) * distance_factor_;
+}
+
+void PairLbmDashdot::compute(int eflag, int vflag) {
+  if (eflag || vflag) ev_setup(eflag, vflag);
+  else evflag = vflag_fdotr = 0;
+
+  double** x = atom->x;
+  double** v = atom->v;
+  double** f = atom->f;
+  const double* radius = atom->radius;
+  const double* rmass = atom->rmass;
+  const int* type = atom->type;
+  const int nlocal = atom->nlocal;
+  const int newton_pair = force->newton_pair;
+  const int inum = list->inum;
+  const int* ilist = list->ilist;
+  const int* numneigh = list->numneigh;
+  int** firstneigh = list->firstneigh;
+
+  double bonds = 0.0;
+  for (int ii = 0; ii < inum; ++ii) {
+    const int i = ilist[ii];
+    const double xi = x[i][0], yi = x[i][1], zi = x[i][2];
+    const double ri = radius[i];
+    const int itype = type[i];
+    const int* jlist = firstneigh[i];
+    const int jnum = numneigh[i];
+    for (int jj = 0; jj < jnum; ++jj) {
+      const int j = jlist[jj] & NEIGHMASK;
+      const double dx = xi - x[j][0], dy = yi - x[j][1], dz = zi - x[j][2];
+      const double rsq = dx * dx + dy * dy + dz * dz;
+      const double rj = radius[j];
+      const double radsum = ri + rj;
+      const contact::PairContactParams& params = params_[itype][type[j]];
+      const double reach = radsum * (1.0 + params.cohesion.range_factor);
+      if (rsq >= reach * reach) continue;
+      const double r = std::sqrt(rsq);
+      const double inv_r = 1.0 / r;
+      contact::PairContactInput in;
+      in.gap = r - radsum;
+      if (in.gap > 0.0 && params.cohesion.k_c <= 0.0) continue;  // no cohesion: no bond
+      in.gap_rate = (dx * (v[i][0] - v[j][0]) + dy * (v[i][1] - v[j][1]) +
+                     dz * (v[i][2] - v[j][2])) * inv_r;
+      in.radius_i = ri;
+      in.radius_j = rj;
+      in.effective_mass = rmass[i] * rmass[j] / (rmass[i] + rmass[j]);
+      const double fpair = contact::pair_normal_force(params, in) * inv_r;
+      const double fx = dx * fpair, fy = dy * fpair, fz = dz * fpair;
+      f[i][0] += fx;
+      f[i][1] += fy;
+      f[i][2] += fz;
+      const bool owns_j = newton_pair || j < nlocal;
+      if (owns_j) {
+        f[j][0] -= fx;
+        f[j][1] -= fy;
+        f[j][2] -= fz;
+      }
+      bonds += owns_j ? 1.0 : 0.5;  // a pair with a ghost is seen by both ranks
+      if (evflag) ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, fx, fy, fz, dx, dy, dz);
+    }
+  }
+  bond_count_local_ = bonds;
+  if (vflag_fdotr) virial_fdotr_compute();
+}
+
+void* PairLbmDashdot::extract(const char* name, int& dim) {
+  dim = 0;
+  if (std::strcmp(name, "bonds") == 0) return &bond_count_local_;
+  return nullptr;
+}

@@ -1,0 +1,19 @@
+#pragma once
+// Keyword values of our styles: a number in a range, or a LIGGGHTS error naming the command,
+// the keyword and the valid range.
+namespace LAMMPS_NS {
+class Error;
+}
+
+namespace lbm_pore {
+
+// Accepts min < value <= max (min <= value <= max when min_inclusive), else error->all with
+// "<command>: <keyword> must be ... (got '<text>')".
+double parse_number(LAMMPS_NS::Error* error, const char* command, const char* keyword,
+                    const char* text, double min, bool min_inclusive, double max);
+
+// Integer variant: min <= value <= max.
+int parse_integer(LAMMPS_NS::Error* error, const char* command, const char* keyword,
+                  const char* text, int min, int max);
+
+}  // namespace lbm_pore
