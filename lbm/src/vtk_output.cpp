@@ -37,6 +37,24 @@
 
 namespace lbm {
 
+bool VtkSeriesWriter::available() {
+#ifdef LBM_PORE_HAVE_VTK
+  return true;
+#else
+  return false;
+#endif
+}
+
+VtkSeriesWriter::VtkSeriesWriter(std::string directory, std::string prefix)
+    : directory_(std::move(directory)), prefix_(std::move(prefix)) {
+  if (!available())
+    throw InputError("fluid VTK output needs VTK: this build of lbm-pore has none (install "
+                     "libvtk9-dev and reconfigure with LBM_PORE_WITH_VTK=ON)");
+  if (prefix_.empty()) throw InputError("fluid VTK output: the file prefix is empty");
+}
+
+#ifdef LBM_PORE_HAVE_VTK
+
 namespace {
 std::string step_name(const std::string& prefix, long long step) {
   char digits[32];
@@ -78,27 +96,6 @@ void check_all(const Communicator& comm, bool ok, const std::string& message) {
   comm.sum(&failures, 1);
   if (failures > 0.0) throw std::runtime_error(message);
 }
-}  // namespace
-
-bool VtkSeriesWriter::available() {
-#ifdef LBM_PORE_HAVE_VTK
-  return true;
-#else
-  return false;
-#endif
-}
-
-VtkSeriesWriter::VtkSeriesWriter(std::string directory, std::string prefix)
-    : directory_(std::move(directory)), prefix_(std::move(prefix)) {
-  if (!available())
-    throw InputError("fluid VTK output needs VTK: this build of lbm-pore has none (install "
-                     "libvtk9-dev and reconfigure with LBM_PORE_WITH_VTK=ON)");
-  if (prefix_.empty()) throw InputError("fluid VTK output: the file prefix is empty");
-}
-
-#ifdef LBM_PORE_HAVE_VTK
-
-namespace {
 // The macroscopic fields on the padded block: owned values from compute_fields, the
 // ghost layer from the neighbours.
 struct PaddedFields {

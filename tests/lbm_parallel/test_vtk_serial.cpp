@@ -24,14 +24,14 @@
 namespace {
 using namespace lbm_parallel_test;
 
+#ifdef LBM_PORE_HAVE_VTK
+
 std::string read_text(const std::filesystem::path& path) {
   std::ifstream in(path);
   std::stringstream s;
   s << in.rdbuf();
   return s.str();
 }
-
-#ifdef LBM_PORE_HAVE_VTK
 
 TEST(VtkSeries, SerialImageRoundTrip) {
   const FlowCase c = body_force_channel();

@@ -10,7 +10,10 @@ namespace lbm {
 // opposite side of this block for a periodic axis owned by this rank alone). Three sweeps,
 // x then y then z, each sending the full padded extent of the other axes, so edge ghosts
 // arrive too with only six messages. Ghosts at non-periodic domain edges are left alone
-// (boundary conditions own them). Buffers are allocated once.
+// (boundary conditions own them). Buffers are allocated once. Along an axis this rank owns
+// entirely, the neighbours follow `periodic` (this rank, or none) whatever `neighbor` says;
+// the constructor checks with the face neighbours that their boxes touch and share the
+// extent of the other two axes (InputError otherwise). All 19 populations are sent.
 class HaloExchange {
  public:
   HaloExchange(const Decomposition& decomposition, const BlockLayout& layout);
