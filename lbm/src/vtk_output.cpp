@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <stdexcept>
 #include <utility>
@@ -131,6 +132,31 @@ PaddedFields padded_fields(const FluidSolver& solver) {
       halo.exchange_scalar(*field);
   }
   return p;
+}
+
+// The entries of an existing .pvd written before `time`: a run resumed from a restart
+// continues the series of the run it resumes; later entries (of the interrupted run) and
+// every entry of an older run that started at time 0 again are dropped.
+std::vector<std::pair<double, std::string>> earlier_entries(const std::filesystem::path& pvd,
+                                                            double time) {
+  std::vector<std::pair<double, std::string>> kept;
+  std::ifstream in(pvd);
+  if (!in) return kept;
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string xml = text.str();
+  const std::regex entry("<DataSet timestep=\"([^\"]+)\"[^>]*file=\"([^\"]+)\"");
+  for (auto it = std::sregex_iterator(xml.begin(), xml.end(), entry); it != std::sregex_iterator();
+       ++it) {
+    double t = 0.0;
+    try {
+      t = std::stod((*it)[1].str());
+    } catch (const std::exception&) {
+      continue;  // not ours: skip rather than fail the run over an index file
+    }
+    if (t < time) kept.emplace_back(t, (*it)[2].str());
+  }
+  return kept;
 }
 
 const char* byte_order() {
@@ -262,7 +288,9 @@ void VtkSeriesWriter::write(const FluidSolver& solver, double time) {
   }
 
   if (rank == 0) {
-    // Writing the same step again (e.g. after a restart) replaces its entry.
+    const std::filesystem::path pvd_path = directory / (prefix_ + ".pvd");
+    if (entries_.empty()) entries_ = earlier_entries(pvd_path, time);
+    // Writing the same step again replaces its entry.
     if (!entries_.empty() && entries_.back().second == listed)
       entries_.back().first = time;
     else
@@ -275,7 +303,7 @@ void VtkSeriesWriter::write(const FluidSolver& solver, double time) {
       pvd << "    <DataSet timestep=\"" << number(t) << "\" group=\"\" part=\"0\" file=\"" << file
           << "\"/>\n";
     pvd << "  </Collection>\n</VTKFile>\n";
-    ok = write_text(directory / (prefix_ + ".pvd"), pvd.str());
+    ok = write_text(pvd_path, pvd.str());
   }
   check_all(comm, ok, "fluid VTK output: cannot write '" + (directory / (prefix_ + ".pvd")).string() + "'");
 }

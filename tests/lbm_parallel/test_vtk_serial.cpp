@@ -100,6 +100,43 @@ TEST(VtkSeries, SerialImageRoundTrip) {
   EXPECT_TRUE(std::filesystem::exists(dir / "fluid_000015.vti"));
 }
 
+std::vector<std::pair<double, std::string>> pvd_entries(const std::filesystem::path& pvd) {
+  const std::string text = read_text(pvd);
+  const std::regex entry("<DataSet timestep=\"([^\"]+)\"[^>]*file=\"([^\"]+)\"");
+  std::vector<std::pair<double, std::string>> listed;
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), entry); it != std::sregex_iterator(); ++it)
+    listed.emplace_back(std::stod((*it)[1]), (*it)[2]);
+  return listed;
+}
+
+// A writer created after a restart continues the series; a fresh run (time 0) restarts it.
+TEST(VtkSeries, ResumedRunContinuesTheSeries) {
+  const FlowCase c = body_force_channel();
+  lbm::Box global;
+  global.hi = c.geometry.dims();
+  lbm::FluidSolver solver(c.geometry, c.parameters, c.drive,
+                          lbm::Decomposition::serial(global, c.parameters.periodic));
+  const std::filesystem::path dir = "vtk_resume_out";
+  std::filesystem::remove_all(dir);
+  {
+    lbm::VtkSeriesWriter first(dir.string(), "fluid");
+    for (int s = 0; s < 3; ++s) {
+      first.write(solver, 0.5 * s);
+      solver.step();
+    }
+  }
+  solver.set_time_step(1);  // resumed from a checkpoint at step 1 (time 0.5)
+  lbm::VtkSeriesWriter resumed(dir.string(), "fluid");
+  resumed.write(solver, 0.5);
+  using Entries = std::vector<std::pair<double, std::string>>;
+  EXPECT_EQ(pvd_entries(dir / "fluid.pvd"),
+            (Entries{{0.0, "fluid_000000.vti"}, {0.5, "fluid_000001.vti"}}));
+  lbm::VtkSeriesWriter fresh(dir.string(), "fluid");
+  solver.set_time_step(0);
+  fresh.write(solver, 0.0);
+  EXPECT_EQ(pvd_entries(dir / "fluid.pvd"), (Entries{{0.0, "fluid_000000.vti"}}));
+}
+
 TEST(VtkSeries, AvailableWithVtk) { EXPECT_TRUE(lbm::VtkSeriesWriter::available()); }
 
 #else
