@@ -7,8 +7,8 @@ namespace lbm {
 
 namespace {
 // One rank: a message to oneself is a copy; -1 means no partner.
-void serial_sendrecv(const double* send, int send_count, int dest, double* recv,
-                     int recv_count, int source) {
+void serial_sendrecv(const double* send, int send_count, int dest, double* recv, int recv_count,
+                     int source) {
   if (dest > 0 || source > 0) throw std::logic_error("serial communicator: only rank 0 exists");
   if (dest < 0 || source < 0) return;
   if (send_count != recv_count)

@@ -17,8 +17,8 @@ Decomposition Decomposition::serial(const Box& global, std::array<bool, 3> perio
   d.periodic = periodic;
   // A periodic axis owned by one rank wraps onto itself; HaloExchange then copies within
   // the block instead of sending a message.
-  for (int a = 0; a < 3; ++a) d.neighbor[a] = periodic[a] ? std::array<int, 2>{0, 0}
-                                                           : std::array<int, 2>{-1, -1};
+  for (int a = 0; a < 3; ++a)
+    d.neighbor[a] = periodic[a] ? std::array<int, 2>{0, 0} : std::array<int, 2>{-1, -1};
   return d;
 }
 
@@ -36,7 +36,8 @@ Decomposition Decomposition::grid(const Box& global, std::array<bool, 3> periodi
       throw InputError("decomposition: " + std::to_string(procs[a]) + " processors along " +
                        axis_name(a) + " but only " + std::to_string(global.size(a)) +
                        " lattice nodes: some rank would own no node; use fewer processors "
-                       "along " + axis_name(a));
+                       "along " +
+                       axis_name(a));
     product *= procs[a];
   }
   if (product != comm.size())

@@ -29,8 +29,8 @@ std::array<int, 2> other_axes(int axis) {
 // sender and the receiver share.
 template <class Visit>
 void for_plane(const BlockLayout& layout, int axis, int plane, Visit visit) {
-  const std::array<std::size_t, 3> stride{
-      1, std::size_t(layout.padded(0)), std::size_t(layout.padded(0)) * layout.padded(1)};
+  const std::array<std::size_t, 3> stride{1, std::size_t(layout.padded(0)),
+                                          std::size_t(layout.padded(0)) * layout.padded(1)};
   const auto [b, c] = other_axes(axis);
   const std::size_t base = std::size_t(plane + BlockLayout::kGhost) * stride[axis];
   std::size_t n = 0;
@@ -41,6 +41,10 @@ void for_plane(const BlockLayout& layout, int axis, int plane, Visit visit) {
 
 HaloExchange::HaloExchange(const Decomposition& decomposition, const BlockLayout& layout)
     : decomposition_(decomposition), layout_(layout) {
+  for (int a = 0; a < 3; ++a)
+    if (layout_.owned().lo[a] != decomposition_.owned.lo[a] ||
+        layout_.owned().hi[a] != decomposition_.owned.hi[a])
+      throw InputError("halo exchange: the block layout is not the decomposition's owned box");
   // Along an axis this rank owns entirely there is no other rank to talk to: the neighbour
   // is this rank if the axis is periodic, none otherwise. Deriving it here keeps the halo
   // consistent with `periodic` even if the caller left `neighbor` at its default.
@@ -48,8 +52,8 @@ HaloExchange::HaloExchange(const Decomposition& decomposition, const BlockLayout
   for (int a = 0; a < 3; ++a)
     if (decomposition_.owned.lo[a] == decomposition_.global.lo[a] &&
         decomposition_.owned.hi[a] == decomposition_.global.hi[a])
-      decomposition_.neighbor[a] = decomposition_.periodic[a] ? std::array<int, 2>{self, self}
-                                                              : std::array<int, 2>{-1, -1};
+      decomposition_.neighbor[a] =
+          decomposition_.periodic[a] ? std::array<int, 2>{self, self} : std::array<int, 2>{-1, -1};
   std::size_t largest_plane = 0;
   for (int a = 0; a < 3; ++a) {
     const auto [b, c] = other_axes(a);
@@ -116,8 +120,10 @@ void HaloExchange::sweep(int axis, T* const* arrays, int components) {
         std::ptrdiff_t(n) * layout_.offset(axis == 0, axis == 1, axis == 2);
     for (int m = 0; m < components; ++m) {
       T* f = arrays[m];
-      for_plane(layout_, axis, -1, [&](std::size_t, std::size_t ghost) { f[ghost] = f[ghost + shift]; });
-      for_plane(layout_, axis, n, [&](std::size_t, std::size_t ghost) { f[ghost] = f[ghost - shift]; });
+      for_plane(layout_, axis, -1,
+                [&](std::size_t, std::size_t ghost) { f[ghost] = f[ghost + shift]; });
+      for_plane(layout_, axis, n,
+                [&](std::size_t, std::size_t ghost) { f[ghost] = f[ghost - shift]; });
     }
     return;
   }

@@ -49,8 +49,9 @@ bool VtkSeriesWriter::available() {
 VtkSeriesWriter::VtkSeriesWriter(std::string directory, std::string prefix)
     : directory_(std::move(directory)), prefix_(std::move(prefix)) {
   if (!available())
-    throw InputError("fluid VTK output needs VTK: this build of lbm-pore has none (install "
-                     "libvtk9-dev and reconfigure with LBM_PORE_WITH_VTK=ON)");
+    throw InputError(
+        "fluid VTK output needs VTK: this build of lbm-pore has none (install "
+        "libvtk9-dev and reconfigure with LBM_PORE_WITH_VTK=ON)");
   if (prefix_.empty()) throw InputError("fluid VTK output: the file prefix is empty");
 }
 
@@ -224,8 +225,7 @@ std::string pvti_text(const FluidSolver& solver, const std::vector<long long>& e
   const double h = geometry.spacing();
   std::ostringstream x;
   x << "<?xml version=\"1.0\"?>\n"
-    << "<VTKFile type=\"PImageData\" version=\"1.0\" byte_order=\""
-    << byte_order()
+    << "<VTKFile type=\"PImageData\" version=\"1.0\" byte_order=\"" << byte_order()
     << "\" header_type=\"UInt64\">\n"
     << "  <PImageData WholeExtent=\"" << whole[0] << ' ' << whole[1] << ' ' << whole[2] << ' '
     << whole[3] << ' ' << whole[4] << ' ' << whole[5] << "\" GhostLevel=\"0\" Origin=\""
@@ -305,7 +305,8 @@ void VtkSeriesWriter::write(const FluidSolver& solver, double time) {
     pvd << "  </Collection>\n</VTKFile>\n";
     ok = write_text(pvd_path, pvd.str());
   }
-  check_all(comm, ok, "fluid VTK output: cannot write '" + (directory / (prefix_ + ".pvd")).string() + "'");
+  check_all(comm, ok,
+            "fluid VTK output: cannot write '" + (directory / (prefix_ + ".pvd")).string() + "'");
 }
 
 #else

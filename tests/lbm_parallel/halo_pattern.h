@@ -20,8 +20,8 @@ inline double pattern(int q, const std::array<int, 3>& g) {
 }
 
 // The value a cell must hold after an exchange (owned cells keep theirs).
-inline double expected(int q, const lbm::Decomposition& d, const lbm::BlockLayout& layout,
-                       int i, int j, int k) {
+inline double expected(int q, const lbm::Decomposition& d, const lbm::BlockLayout& layout, int i,
+                       int j, int k) {
   std::array<int, 3> g = layout.to_global(i, j, k);
   for (int a = 0; a < 3; ++a) {
     if (g[a] >= d.global.lo[a] && g[a] < d.global.hi[a]) continue;

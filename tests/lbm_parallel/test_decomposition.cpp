@@ -39,8 +39,8 @@ TEST(Decomposition, SerialOwnsEverythingAndWrapsPeriodicAxesOntoItself) {
 
 TEST(Decomposition, OneByOneByOneGridEqualsSerial) {
   const lbm::Box global = box({2, 0, 1}, {9, 5, 4});
-  const auto d = lbm::Decomposition::grid(global, {false, true, false}, {1, 1, 1},
-                                          lbm::Communicator());
+  const auto d =
+      lbm::Decomposition::grid(global, {false, true, false}, {1, 1, 1}, lbm::Communicator());
   for (int a = 0; a < 3; ++a) {
     EXPECT_EQ(d.owned.lo[a], global.lo[a]);
     EXPECT_EQ(d.owned.hi[a], global.hi[a]);

@@ -23,7 +23,9 @@ lbm::Box make_box(std::array<int, 3> lo, std::array<int, 3> hi) {
   return b;
 }
 
-std::array<bool, 3> periodic_bits(int bits) { return {(bits & 1) != 0, (bits & 2) != 0, (bits & 4) != 0}; }
+std::array<bool, 3> periodic_bits(int bits) {
+  return {(bits & 1) != 0, (bits & 2) != 0, (bits & 4) != 0};
+}
 
 void check_exchange(const lbm::Decomposition& d) {
   const lbm::BlockLayout layout(d.owned);
@@ -79,7 +81,8 @@ TEST(GridOnTwoRanks, CutsTileTheGlobalBoxWithTheRightNeighbours) {
           expected = {other, other};
         else
           expected = rank == 0 ? std::array<int, 2>{-1, 1} : std::array<int, 2>{0, -1};
-        EXPECT_EQ(d.neighbor[a], expected) << "split " << split << " axis " << a << " bits " << bits;
+        EXPECT_EQ(d.neighbor[a], expected)
+            << "split " << split << " axis " << a << " bits " << bits;
       }
       check_exchange(d);
     }
@@ -130,7 +133,8 @@ TEST(HandMadeBoxes, UnevenCutsAlongEveryAxis) {
 }
 
 TEST(HandMadeBoxes, NeighboursThatDoNotShareAFaceAreRejected) {
-  lbm::Decomposition d = hand_made(make_box({0, 0, 0}, {10, 7, 5}), 0, 3, false, {true, false, false});
+  lbm::Decomposition d =
+      hand_made(make_box({0, 0, 0}, {10, 7, 5}), 0, 3, false, {true, false, false});
   if (d.comm.rank() == 1) d.owned.hi[1] = 6;  // rank 1 one node shorter along y
   const lbm::BlockLayout layout(d.owned);
   try {

@@ -99,9 +99,12 @@ void compare(const FlowCase& c, const Split& split) {
 }
 
 const Split kSplits[] = {
-    {"grid along x", 0, -1, false},      {"grid along y", 1, -1, false},
-    {"grid along z", 2, -1, false},      {"hand-made x cut at 5", 0, 5, false},
-    {"hand-made y cut at 3, reversed", 1, 3, true}, {"hand-made z cut at 1", 2, 1, false},
+    {"grid along x", 0, -1, false},
+    {"grid along y", 1, -1, false},
+    {"grid along z", 2, -1, false},
+    {"hand-made x cut at 5", 0, 5, false},
+    {"hand-made y cut at 3, reversed", 1, 3, true},
+    {"hand-made z cut at 1", 2, 1, false},
 };
 
 TEST(OneRankEqualsTwoRanks, BodyForceChannelWithSolidVoxels) {

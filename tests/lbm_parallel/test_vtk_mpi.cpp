@@ -62,7 +62,8 @@ void write_and_check(int split, const std::string& name) {
     for (int& e : piece) numbers >> e;
     for (int a = 0; a < 3; ++a) {
       EXPECT_EQ(piece[2 * a], owned.lo[a]);
-      EXPECT_EQ(piece[2 * a + 1], owned.hi[a] - (owned.hi[a] < global.hi[a] ? 0 : 1)) << "axis " << a;
+      EXPECT_EQ(piece[2 * a + 1], owned.hi[a] - (owned.hi[a] < global.hi[a] ? 0 : 1))
+          << "axis " << a;
     }
     EXPECT_NE(header.find("WholeExtent=\"0 11 0 9 0 5\""), std::string::npos);
   }
@@ -97,7 +98,8 @@ void write_and_check(int split, const std::string& name) {
     worst = std::max(worst, std::abs(density->GetTuple1(n) - expected.density[n]));
     worst = std::max(worst, std::abs(pressure->GetTuple1(n) - expected.density[n] / 3.0));
     for (int a = 0; a < 3; ++a)
-      worst = std::max(worst, std::abs(velocity->GetComponent(n, a) - expected.velocity[3 * n + a]));
+      worst =
+          std::max(worst, std::abs(velocity->GetComponent(n, a) - expected.velocity[3 * n + a]));
     wrong_types += node_type->GetTuple1(n) != expected.node_type[n];
   }
   EXPECT_LT(worst, 1e-12) << name;
@@ -107,9 +109,11 @@ void write_and_check(int split, const std::string& name) {
   std::stringstream pvd;
   pvd << in.rdbuf();
   EXPECT_NE(pvd.str().find("timestep=\"1.5\" group=\"\" part=\"0\" file=\"flow_000030.pvti\""),
-            std::string::npos) << pvd.str();
+            std::string::npos)
+      << pvd.str();
   EXPECT_NE(pvd.str().find("timestep=\"1.55\" group=\"\" part=\"0\" file=\"flow_000031.pvti\""),
-            std::string::npos) << pvd.str();
+            std::string::npos)
+      << pvd.str();
 }
 
 TEST(VtkSeriesOnTwoRanks, SplitAlongX) { write_and_check(0, "x"); }

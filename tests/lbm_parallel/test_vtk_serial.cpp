@@ -92,7 +92,8 @@ TEST(VtkSeries, SerialImageRoundTrip) {
   const std::string pvd = read_text(dir / "fluid.pvd");
   const std::regex entry("<DataSet timestep=\"([^\"]+)\"[^>]*file=\"([^\"]+)\"");
   std::vector<std::pair<double, std::string>> listed;
-  for (auto it = std::sregex_iterator(pvd.begin(), pvd.end(), entry); it != std::sregex_iterator(); ++it)
+  for (auto it = std::sregex_iterator(pvd.begin(), pvd.end(), entry); it != std::sregex_iterator();
+       ++it)
     listed.emplace_back(std::stod((*it)[1]), (*it)[2]);
   ASSERT_EQ(listed.size(), 2u) << pvd;
   EXPECT_EQ(listed[0], (std::pair<double, std::string>{0.25, "fluid_000010.vti"}));
@@ -104,7 +105,8 @@ std::vector<std::pair<double, std::string>> pvd_entries(const std::filesystem::p
   const std::string text = read_text(pvd);
   const std::regex entry("<DataSet timestep=\"([^\"]+)\"[^>]*file=\"([^\"]+)\"");
   std::vector<std::pair<double, std::string>> listed;
-  for (auto it = std::sregex_iterator(text.begin(), text.end(), entry); it != std::sregex_iterator(); ++it)
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), entry);
+       it != std::sregex_iterator(); ++it)
     listed.emplace_back(std::stod((*it)[1]), (*it)[2]);
   return listed;
 }
