@@ -81,7 +81,7 @@ FixWallVoxel::FixWallVoxel(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg, a
   if (!tangential_damping_given_) params_.friction.damping_ratio = params_.normal.damping_ratio;
 
   try {
-    geometry_ = lbm_pore::acquire_wall_geometry(source);
+    use_geometry(lbm_pore::acquire_wall_geometry(source));
   } catch (const lbm::InputError& e) {
     error->all(FLERR, (std::string(kCommand) + ": " + e.what()).c_str());
   }
@@ -131,6 +131,7 @@ int FixWallVoxel::setmask() { return FixConst::POST_FORCE; }
 
 void FixWallVoxel::use_geometry(std::shared_ptr<const lbm::VoxelGeometry> geometry) {
   geometry_ = std::move(geometry);
+  surface_ = std::make_unique<contact::VoxelSurface>(*geometry_);
 }
 
 void FixWallVoxel::init() {
@@ -183,7 +184,7 @@ void FixWallVoxel::post_force(int /*vflag*/) {
     if (!(mask[i] & groupbit)) continue;
     const double reach = contact::wall_contact_reach(params_, radius[i]);
     const contact::Vec3 centre{x[i][0], x[i][1], x[i][2]};
-    contact::find_surface_points(*geometry_, centre, reach, points_);
+    surface_->find(centre, reach, points_);
     if (points_.empty()) {
       std::fill(history, history + kStride, 0.0);
       continue;

@@ -47,6 +47,7 @@ class FixWallVoxel : public Fix {
   void check_time_step();
 
   std::shared_ptr<const lbm::VoxelGeometry> geometry_;
+  std::unique_ptr<contact::VoxelSurface> surface_;  // search structure over *geometry_
   contact::WallContactParams params_;
   bool kt_given_ = false, tangential_damping_given_ = false;
   std::vector<double> history_;  // [atom][kMaxContacts][kHistoryPerContact]

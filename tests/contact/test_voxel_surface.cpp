@@ -133,3 +133,31 @@ TEST(VoxelSurface, NothingOutOfReach) {
   find_surface_points(g, {5.0, 5.0, 6.0}, 2.4, points);
   EXPECT_TRUE(points.empty());
 }
+
+TEST(VoxelSurface, AcceleratedQueryEqualsFullScan) {
+  // The pore scene of the paper (block with a cylindrical hole), probed on a grid of centres.
+  lbm::VoxelGeometry g({30, 21, 21}, 0.5, {-1.0, 0.2, 0.0});
+  for (int k = 0; k < 21; ++k)
+    for (int j = 0; j < 21; ++j)
+      for (int i = 10; i < 20; ++i) {
+        const double dy = j - 10.0, dz = k - 10.0;
+        if (dy * dy + dz * dz >= 36.0) g.set_solid(i, j, k, true);
+      }
+  const VoxelSurface surface(g);
+  std::vector<SurfacePoint> full, fast;
+  int compared = 0, with_contacts = 0;
+  for (double x = -1.2; x < 14.0; x += 0.37)
+    for (double y = 0.0; y < 10.5; y += 0.41)
+      for (double z = 0.0; z < 10.5; z += 0.53) {
+        find_surface_points(g, {x, y, z}, 1.1, full);
+        surface.find({x, y, z}, 1.1, fast);
+        ASSERT_EQ(full.size(), fast.size());
+        double sum_full = 0.0, sum_fast = 0.0;
+        for (const auto& p : full) sum_full += p.distance + 3.0 * p.normal.x + 7.0 * p.normal.z;
+        for (const auto& p : fast) sum_fast += p.distance + 3.0 * p.normal.x + 7.0 * p.normal.z;
+        EXPECT_NEAR(sum_full, sum_fast, 1e-12);
+        ++compared;
+        if (!full.empty()) ++with_contacts;
+      }
+  EXPECT_GT(with_contacts, compared / 10);
+}

@@ -1,5 +1,6 @@
 #include "contact/voxel_surface.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -57,65 +58,118 @@ SurfacePoint inside_point(const lbm::VoxelGeometry& geometry, const int cell[3],
   return p;
 }
 
+
+// Lattice coordinates of a query: voxel i spans [i, i + 1) in u.
+struct Query {
+  double u[3];
+  Vec3 origin_shift;  // physical position of u = 0
+  double spacing;
+  double reach_u2;
+  int lo[3], hi[3];   // voxel range within reach, clamped to the geometry
+  bool empty;
+};
+
+Query make_query(const lbm::VoxelGeometry& geometry, Vec3 centre, double reach) {
+  Query q;
+  q.spacing = geometry.spacing();
+  const auto& origin = geometry.origin();
+  const auto& dims = geometry.dims();
+  const double c[3] = {centre.x, centre.y, centre.z};
+  const double reach_u = reach / q.spacing;
+  q.reach_u2 = reach_u * reach_u;
+  q.origin_shift = {origin[0] - 0.5 * q.spacing, origin[1] - 0.5 * q.spacing,
+                    origin[2] - 0.5 * q.spacing};
+  q.empty = false;
+  for (int a = 0; a < 3; ++a) {
+    q.u[a] = (c[a] - origin[a]) / q.spacing + 0.5;
+    q.lo[a] = std::max(0, static_cast<int>(std::floor(q.u[a] - reach_u)));
+    q.hi[a] = std::min(dims[a] - 1, static_cast<int>(std::floor(q.u[a] + reach_u)));
+    if (q.lo[a] > q.hi[a]) q.empty = true;
+  }
+  return q;
+}
+
+// The candidate of solid voxel `cell`, if it is a feature of the union within reach.
+void consider_voxel(const lbm::VoxelGeometry& geometry, const Query& q, const int cell[3],
+                    std::vector<SurfacePoint>& out) {
+  int side[3];
+  double closest[3];
+  double dist2 = 0.0;
+  for (int a = 0; a < 3; ++a) {
+    side[a] = side_of(q.u[a], cell[a]);
+    closest[a] = side[a] < 0 ? cell[a] : (side[a] > 0 ? cell[a] + 1 : q.u[a]);
+    const double d = q.u[a] - closest[a];
+    dist2 += d * d;
+  }
+  if (side[0] == 0 && side[1] == 0 && side[2] == 0) {
+    out.push_back(inside_point(geometry, cell, q.u, q.spacing, q.origin_shift));
+    return;
+  }
+  if (dist2 > q.reach_u2) return;
+  if (feature_covered(geometry, cell, side)) return;
+  const double dist = std::sqrt(dist2);
+  SurfacePoint p;
+  p.point = q.origin_shift + q.spacing * Vec3{closest[0], closest[1], closest[2]};
+  if (dist > 0.0) {
+    p.normal = (1.0 / dist) * Vec3{q.u[0] - closest[0], q.u[1] - closest[1], q.u[2] - closest[2]};
+  } else {
+    // Centre exactly on the surface: the outward direction of the feature.
+    p.normal = Vec3{double(side[0]), double(side[1]), double(side[2])};
+    p.normal = (1.0 / norm(p.normal)) * p.normal;
+  }
+  p.distance = dist * q.spacing;
+  out.push_back(p);
+}
+
 }  // namespace
 
 void find_surface_points(const lbm::VoxelGeometry& geometry, Vec3 centre, double reach,
                          std::vector<SurfacePoint>& out) {
   out.clear();
-  const double spacing = geometry.spacing();
-  const auto& origin = geometry.origin();
-  // Lattice coordinates: voxel i spans [i, i + 1) in u.
-  const double u[3] = {(centre.x - origin[0]) / spacing + 0.5,
-                       (centre.y - origin[1]) / spacing + 0.5,
-                       (centre.z - origin[2]) / spacing + 0.5};
-  // Physical position of u = 0.
-  const Vec3 origin_shift{origin[0] - 0.5 * spacing, origin[1] - 0.5 * spacing,
-                          origin[2] - 0.5 * spacing};
-  const double reach_u = reach / spacing;
-  const double reach_u2 = reach_u * reach_u;
-  int lo[3], hi[3];
-  for (int a = 0; a < 3; ++a) {
-    lo[a] = static_cast<int>(std::floor(u[a] - reach_u));
-    hi[a] = static_cast<int>(std::floor(u[a] + reach_u));
-  }
-  const auto& dims = geometry.dims();
-  for (int a = 0; a < 3; ++a) {
-    if (lo[a] < 0) lo[a] = 0;
-    if (hi[a] > dims[a] - 1) hi[a] = dims[a] - 1;
-  }
-
-  for (int k = lo[2]; k <= hi[2]; ++k)
-    for (int j = lo[1]; j <= hi[1]; ++j)
-      for (int i = lo[0]; i <= hi[0]; ++i) {
+  const Query q = make_query(geometry, centre, reach);
+  if (q.empty) return;
+  for (int k = q.lo[2]; k <= q.hi[2]; ++k)
+    for (int j = q.lo[1]; j <= q.hi[1]; ++j)
+      for (int i = q.lo[0]; i <= q.hi[0]; ++i) {
         if (!geometry.is_solid(i, j, k)) continue;
         const int cell[3] = {i, j, k};
-        int side[3];
-        double closest[3];
-        double dist2 = 0.0;
-        for (int a = 0; a < 3; ++a) {
-          side[a] = side_of(u[a], cell[a]);
-          closest[a] = side[a] < 0 ? cell[a] : (side[a] > 0 ? cell[a] + 1 : u[a]);
-          const double d = u[a] - closest[a];
-          dist2 += d * d;
-        }
-        if (side[0] == 0 && side[1] == 0 && side[2] == 0) {
-          out.push_back(inside_point(geometry, cell, u, spacing, origin_shift));
+        consider_voxel(geometry, q, cell, out);
+      }
+}
+
+VoxelSurface::VoxelSurface(const lbm::VoxelGeometry& geometry) : geometry_(&geometry) {
+  const auto& dims = geometry.dims();
+  for (int a = 0; a < 3; ++a) blocks_[a] = (dims[a] + kBlock - 1) / kBlock;
+  block_has_solid_.assign(static_cast<std::size_t>(blocks_[0]) * blocks_[1] * blocks_[2], 0);
+  for (int k = 0; k < dims[2]; ++k)
+    for (int j = 0; j < dims[1]; ++j)
+      for (int i = 0; i < dims[0]; ++i)
+        if (geometry.is_solid(i, j, k))
+          block_has_solid_[(static_cast<std::size_t>(k / kBlock) * blocks_[1] + j / kBlock) *
+                               blocks_[0] + i / kBlock] = 1;
+}
+
+void VoxelSurface::find(Vec3 centre, double reach, std::vector<SurfacePoint>& out) const {
+  out.clear();
+  const Query q = make_query(*geometry_, centre, reach);
+  if (q.empty) return;
+  // Blocks first, so the voxel loops below see each voxel once, in the same order as
+  // find_surface_points within a block (the order of the contacts does not matter).
+  for (int bk = q.lo[2] / kBlock; bk <= q.hi[2] / kBlock; ++bk)
+    for (int bj = q.lo[1] / kBlock; bj <= q.hi[1] / kBlock; ++bj)
+      for (int bi = q.lo[0] / kBlock; bi <= q.hi[0] / kBlock; ++bi) {
+        if (!block_has_solid_[(static_cast<std::size_t>(bk) * blocks_[1] + bj) * blocks_[0] + bi])
           continue;
-        }
-        if (dist2 > reach_u2) continue;
-        if (feature_covered(geometry, cell, side)) continue;
-        const double dist = std::sqrt(dist2);
-        SurfacePoint p;
-        p.point = origin_shift + spacing * Vec3{closest[0], closest[1], closest[2]};
-        if (dist > 0.0) {
-          p.normal = (1.0 / dist) * Vec3{u[0] - closest[0], u[1] - closest[1], u[2] - closest[2]};
-        } else {
-          // Centre exactly on the surface: the outward direction of the feature.
-          p.normal = Vec3{double(side[0]), double(side[1]), double(side[2])};
-          p.normal = (1.0 / norm(p.normal)) * p.normal;
-        }
-        p.distance = dist * spacing;
-        out.push_back(p);
+        const int k_end = std::min(q.hi[2], bk * kBlock + kBlock - 1);
+        const int j_end = std::min(q.hi[1], bj * kBlock + kBlock - 1);
+        const int i_end = std::min(q.hi[0], bi * kBlock + kBlock - 1);
+        for (int k = std::max(q.lo[2], bk * kBlock); k <= k_end; ++k)
+          for (int j = std::max(q.lo[1], bj * kBlock); j <= j_end; ++j)
+            for (int i = std::max(q.lo[0], bi * kBlock); i <= i_end; ++i) {
+              if (!geometry_->is_solid(i, j, k)) continue;
+              const int cell[3] = {i, j, k};
+              consider_voxel(*geometry_, q, cell, out);
+            }
       }
 }
 

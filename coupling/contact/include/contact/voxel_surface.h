@@ -33,10 +33,29 @@ struct SurfacePoint {
   double distance = 0.0;
 };
 
-// Appends to `out` every surface feature within `reach` of `centre` (reach = radius plus
+// Fills `out` with every surface feature within `reach` of `centre` (reach = radius plus
 // the adhesion range for the wall fix). `out` is cleared first; pass the same vector every
-// step to avoid allocations.
+// step to avoid allocations. Scans every voxel within reach: use VoxelSurface when calling
+// it for many particles.
 void find_surface_points(const lbm::VoxelGeometry& geometry, Vec3 centre, double reach,
                          std::vector<SurfacePoint>& out);
+
+// The same query, accelerated for repeated calls: a coarse map of which blocks of
+// kBlock^3 voxels hold any solid lets particles in open fluid (most of them) skip the voxel
+// scan, and particles near a wall scan only the blocks that hold solid. Same results as
+// find_surface_points. Keeps a reference to the geometry, which must outlive it.
+class VoxelSurface {
+ public:
+  explicit VoxelSurface(const lbm::VoxelGeometry& geometry);
+  void find(Vec3 centre, double reach, std::vector<SurfacePoint>& out) const;
+  const lbm::VoxelGeometry& geometry() const { return *geometry_; }
+
+  static constexpr int kBlock = 4;
+
+ private:
+  const lbm::VoxelGeometry* geometry_;
+  int blocks_[3] = {0, 0, 0};
+  std::vector<unsigned char> block_has_solid_;
+};
 
 }  // namespace contact
