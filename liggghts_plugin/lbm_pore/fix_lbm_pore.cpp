@@ -1,24 +1,41 @@
 #include "fix_lbm_pore.h"
 
+#include <mpi.h>
+
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <limits>
 
 #include "atom.h"
 #include "comm.h"
+#include "contact/short_range_attraction.h"
+#include "contact/voxel_surface.h"
 #include "coupling/lattice_frame.h"
+#include "coupling/lubrication/lubrication.h"
+#include "coupling/sphere_coupling.h"
 #include "coupling/unit_conversion.h"
 #include "domain.h"
 #include "error.h"
+#include "fix_gravity.h"
+#include "force.h"
 #include "lbm/checkpoint.h"
+#include "lbm/collide_stream.h"
 #include "lbm/decomposition.h"
 #include "lbm/fluid_solver.h"
 #include "lbm/input_error.h"
 #include "lbm/macroscopic.h"
+#include "lbm/node_type.h"
 #include "lbm/pore_scene.h"
 #include "lbm/stability.h"
 #include "lbm/voxel_file.h"
 #include "lbm/vtk_output.h"
+#include "memory.h"
+#include "modify.h"
+#include "neigh_list.h"
+#include "neigh_request.h"
+#include "neighbor.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;
@@ -28,27 +45,55 @@ namespace {
 // is accurate only well below the lattice speed of sound c_s = 1/sqrt(3).
 constexpr double kMaxLatticeSpeed = 0.3;
 constexpr double kSoundSpeed = 0.5773502691896258;
+// A particle may move at most this many cells per fluid step: the mapping uncovers at most
+// one layer of nodes per step, and the refill assumes so (DESIGN.md, stability guards).
+constexpr double kMaxShiftPerFluidStep = 0.5;
+constexpr int kLoadsPerAtom = 6;  // force, torque
+constexpr int kCheckEvery = 10;   // fluid steps between NaN/runaway scans of the lattice
 
 int cells(double length, double dx) { return static_cast<int>(std::lround(length / dx)); }
+
+double now() { return MPI_Wtime(); }
+
+coupling::MovingWallScheme wall_scheme(const std::string& name) {
+  if (name == "bouzidi") return coupling::MovingWallScheme::kBouzidi;
+  if (name == "bounce_back") return coupling::MovingWallScheme::kBounceBack;
+  return coupling::MovingWallScheme::kMeiLuoShyy;
+}
 }  // namespace
 
 FixLbmPore::FixLbmPore(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg, arg) {
   std::vector<std::string> words(arg + 3, arg + narg);
   try {
     options_ = lbm_pore::parse_pore_options(words);
+    build_geometry();
   } catch (const lbm::InputError& e) {
-    error->all(FLERR, e.what());
+    error->all(FLERR, (std::string("fix lbm/pore: ") + e.what()).c_str());
   }
+  if (!atom->radius_flag)
+    error->all(FLERR, "fix lbm/pore needs per-atom radii: use atom_style granular (or sphere)");
   vector_flag = 1;
   size_vector = kNumDiagnostics;
   global_freq = 1;
   extvector = 0;
   restart_global = 1;
+  restart_peratom = 1;
   nevery = 1;
+  comm_forward = 6;  // velocity, angular velocity
+  comm_reverse = kLoadsPerAtom;
   diagnostics_.assign(kNumDiagnostics, 0.0);
+  grow_arrays(atom->nmax);
+  atom->add_callback(0);  // grow/copy/exchange
+  atom->add_callback(1);  // restart
+  for (int i = 0; i < atom->nmax; ++i)
+    for (int k = 0; k < kLoadsPerAtom; ++k) loads_[i][k] = 0.0;
 }
 
-FixLbmPore::~FixLbmPore() = default;
+FixLbmPore::~FixLbmPore() {
+  atom->delete_callback(id, 0);
+  atom->delete_callback(id, 1);
+  memory->destroy(loads_);
+}
 
 int FixLbmPore::setmask() { return FixConst::POST_FORCE | FixConst::END_OF_STEP; }
 
@@ -60,7 +105,12 @@ void FixLbmPore::init() {
   in.dt_dem = update->dt;
   in.n_dem = options_.n_dem;
   try {
-    units_ = std::make_unique<coupling::UnitConversion>(in);
+    auto units = std::make_unique<coupling::UnitConversion>(in);
+    if (solver_ && std::abs(units->tau() - units_->tau()) > 1e-12)
+      throw lbm::InputError("the DEM time step or n_dem changed between runs (tau " +
+                            std::to_string(units_->tau()) + " -> " + std::to_string(units->tau()) +
+                            "); the fluid's relaxation time is fixed once the lattice exists");
+    units_ = std::move(units);
     if (!solver_) build_lattice();
   } catch (const lbm::InputError& e) {
     error->all(FLERR, (std::string("fix lbm/pore: ") + e.what()).c_str());
@@ -69,18 +119,61 @@ void FixLbmPore::init() {
     try {
       lbm::read_checkpoint(*solver_, resume_checkpoint_);
       fluid_steps_ = solver_->time_step();
+      resumed_ = true;
     } catch (const lbm::InputError& e) {
       error->all(FLERR, (std::string("fix lbm/pore: restart: ") + e.what()).c_str());
     }
     resume_checkpoint_.clear();
   }
+  if (comm->ghost_velocity == 0)
+    error->all(FLERR, "fix lbm/pore needs ghost velocities: add 'communicate single vel yes'");
+  if (force->newton_pair)
+    error->all(FLERR, "fix lbm/pore needs 'newton off' (granular pair styles in LIGGGHTS)");
+  // The lubrication and bond search need every pair whose gap is below the lubrication
+  // cutoff: the neighbor list holds pairs closer than the contact distance plus the skin.
+  const double lubrication_reach = options_.lubrication_cutoff * options_.dx;
+  if (options_.lubrication && neighbor->skin < lubrication_reach) {
+    char text[300];
+    std::snprintf(text, sizeof text,
+                  "fix lbm/pore: the neighbor skin %g is smaller than the lubrication cutoff "
+                  "lubrication_cutoff * dx = %g: raise it ('neighbor %g bin') or lower "
+                  "lubrication_cutoff",
+                  neighbor->skin, lubrication_reach, lubrication_reach);
+    error->all(FLERR, text);
+  }
+  const int request = neighbor->request(this);
+  neighbor->requests[request]->pair = 0;
+  neighbor->requests[request]->fix = 1;
+  neighbor->requests[request]->half = 0;
+  neighbor->requests[request]->gran = 1;
+  find_gravity();
   print_setup();
 }
 
-// Builds the voxel geometry, the lattice frame and the fluid solver on LIGGGHTS's own
-// subdomains (each rank owns the nodes inside its subdomain).
-void FixLbmPore::build_lattice() {
+void FixLbmPore::init_list(int, NeighList* list) { list_ = list; }
+
+// Buoyancy: the fluid carries no body force (it is driven through its boundaries), so its
+// pressure holds no hydrostatic part and the particles feel no Archimedes force from it.
+// With fix gravity on, each particle gets -rho_f V g in addition, which makes the net
+// weight (rho_p - rho_f) V g.
+void FixLbmPore::find_gravity() {
+  has_gravity_ = false;
+  for (int a = 0; a < 3; ++a) gravity_[a] = 0.0;
+  for (int i = 0; i < modify->nfix; ++i) {
+    if (std::strcmp(modify->fix[i]->style, "gravity") != 0) continue;
+    auto* gravity = static_cast<FixGravity*>(modify->fix[i]);
+    double g[3];
+    gravity->get_gravity(g);
+    for (int a = 0; a < 3; ++a) gravity_[a] += g[a];
+    has_gravity_ = true;
+  }
+}
+
+void FixLbmPore::build_geometry() {
   const double dx = options_.dx;
+  std::array<double, 3> origin;
+  for (int a = 0; a < 3; ++a)
+    origin[a] = options_.origin_given ? options_.origin[a] : domain->boxlo[a] + 0.5 * dx;
   if (options_.scene == lbm_pore::PoreOptions::Scene::kPore) {
     lbm::PoreSceneSpec spec;
     spec.inlet_length = cells(options_.inlet_length, dx);
@@ -90,31 +183,57 @@ void FixLbmPore::build_lattice() {
     spec.width = cells(options_.width, dx);
     spec.pore_diameter = options_.pore_diameter / dx;
     pore_diameter_lattice_ = spec.pore_diameter;
-    geometry_ = std::make_unique<lbm::VoxelGeometry>(lbm::make_pore_scene(spec, dx));
+    geometry_ = std::make_shared<lbm::VoxelGeometry>(lbm::make_pore_scene(spec, dx, origin));
+    const auto r = lbm::regions_of(spec);
+    pore_.axis = 0;
+    pore_.start = r.pore_begin - 0.5;
+    pore_.end = r.pore_end - 0.5;
+    pore_.centre = {r.axis_y, r.axis_z};
+    pore_.diameter = spec.pore_diameter;
+    inlet_x_ = r.inlet_end - 0.5;
+    outlet_x_ = r.outlet_begin - 0.5;
   } else {
-    geometry_ = std::make_unique<lbm::VoxelGeometry>(lbm::load_voxel_file(options_.voxel_file));
-    if (std::abs(geometry_->spacing() - dx) > 1e-9 * dx)
-      throw lbm::InputError("scene voxels: the file's spacing " +
-                            std::to_string(geometry_->spacing()) + " differs from dx " +
-                            std::to_string(dx));
-    // The pore diameter of an arbitrary geometry: the narrowest open cross-section's
-    // equivalent circle, sqrt(4 A / pi).
-    const auto& d = geometry_->dims();
+    const auto file = lbm::load_voxel_file(options_.voxel_file);
+    if (std::abs(file.spacing() - dx) > 1e-9 * dx)
+      throw lbm::InputError("scene voxels: the file's spacing " + std::to_string(file.spacing()) +
+                            " differs from dx " + std::to_string(dx));
+    // The lattice sits where the box (or 'origin') says; the file's own origin is ignored.
+    auto placed = std::make_shared<lbm::VoxelGeometry>(file.dims(), dx, origin);
+    const auto& d = file.dims();
+    // The pore of an arbitrary geometry: its narrowest open cross-section, as the
+    // equivalent circle sqrt(4 A / pi); deposits count anywhere in the lattice.
     double narrowest = 1e300;
     for (int i = 0; i < d[0]; ++i) {
       int open = 0;
       for (int k = 0; k < d[2]; ++k)
-        for (int j = 0; j < d[1]; ++j) open += !geometry_->is_solid(i, j, k);
+        for (int j = 0; j < d[1]; ++j) {
+          const bool solid = file.is_solid(i, j, k);
+          placed->set_solid(i, j, k, solid);
+          open += !solid;
+        }
       narrowest = std::min(narrowest, double(open));
     }
+    geometry_ = placed;
     pore_diameter_lattice_ = std::sqrt(4.0 * narrowest / M_PI);
+    pore_.axis = 0;
+    pore_.start = -0.5;
+    pore_.end = d[0] - 0.5;
+    pore_.centre = {0.5 * (d[1] - 1), 0.5 * (d[2] - 1)};
+    pore_.diameter = 1e30;
+    inlet_x_ = 0.5;
+    outlet_x_ = d[0] - 1.5;
   }
+  surface_ = std::make_unique<contact::VoxelSurface>(*geometry_);
+}
 
+// Builds the lattice frame and the fluid solver on LIGGGHTS's own subdomains (each rank
+// owns the nodes inside its subdomain).
+void FixLbmPore::build_lattice() {
+  const double dx = options_.dx;
   frame_ = std::make_unique<coupling::LatticeFrame>();
   frame_->dx = dx;
   frame_->dims = geometry_->dims();
-  for (int a = 0; a < 3; ++a)
-    frame_->origin[a] = options_.origin_given ? options_.origin[a] : domain->boxlo[a] + 0.5 * dx;
+  frame_->origin = geometry_->origin();
   // The lattice must fill the simulation box: every node's cell inside it.
   for (int a = 0; a < 3; ++a) {
     const double lattice_lo = frame_->origin[a] - 0.5 * dx;
@@ -131,6 +250,17 @@ void FixLbmPore::build_lattice() {
       throw lbm::InputError(text);
     }
   }
+  for (int a = 1; a < 3; ++a)
+    if (options_.lateral_periodic != (domain->periodicity[a] != 0))
+      throw lbm::InputError(std::string("lateral: the fluid is ") +
+                            (options_.lateral_periodic ? "periodic" : "walled") + " along " +
+                            "xyz"[a] + " but the LIGGGHTS boundary there is " +
+                            (domain->periodicity[a] ? "periodic" : "not periodic") +
+                            "; use 'boundary f p p' with 'lateral periodic' or 'boundary f f f' "
+                            "with 'lateral wall'");
+  if (domain->periodicity[0])
+    throw lbm::InputError("the flow axis x must not be periodic: use 'boundary f ...' (the "
+                          "fluid enters at x-lo and leaves at x-hi)");
 
   lbm::FluidParameters p;
   p.tau = units_->tau();
@@ -141,9 +271,28 @@ void FixLbmPore::build_lattice() {
   if (options_.drive == lbm_pore::PoreOptions::Drive::kVelocity) {
     drive.kind = lbm::FlowDrive::kInletVelocity;
     drive.inlet_velocity = units_->velocity_to_lattice(options_.drive_value);
+    if (std::abs(drive.inlet_velocity) > kMaxLatticeSpeed) {
+      char text[400];
+      std::snprintf(text, sizeof text,
+                    "velocity: %g is %.3g in lattice units, above the stable limit %.2f "
+                    "(lattice Mach %.2f); lower 'velocity', lower n_dem or the DEM time step, "
+                    "or refine dx",
+                    options_.drive_value, drive.inlet_velocity, kMaxLatticeSpeed,
+                    drive.inlet_velocity / kSoundSpeed);
+      throw lbm::InputError(text);
+    }
   } else {
     drive.kind = lbm::FlowDrive::kPressureLoss;
     drive.pressure_loss = units_->pressure_to_lattice(options_.drive_value);
+    // A density difference of 10 % is far outside the weakly compressible regime.
+    if (std::abs(drive.pressure_loss) > 0.1 / 3.0) {
+      char text[400];
+      std::snprintf(text, sizeof text,
+                    "pressure_loss: %g is a lattice density difference of %.3g, above the "
+                    "weakly compressible limit 0.1; lower 'pressure_loss' or n_dem, or refine dx",
+                    options_.drive_value, 3.0 * drive.pressure_loss);
+      throw lbm::InputError(text);
+    }
   }
 
   lbm::Decomposition d;
@@ -166,37 +315,137 @@ void FixLbmPore::build_lattice() {
                             " holds no lattice node on axis " + std::string(1, "xyz"[a]) +
                             ": use fewer ranks along that axis (processors command)");
   solver_ = std::make_unique<lbm::FluidSolver>(*geometry_, p, drive, d);
-  inlet_plane_ = 0;
-  outlet_plane_ = frame_->dims[0] - 1;
 
-  if (options_.vtk_every > 0) vtk_ = std::make_unique<lbm::VtkSeriesWriter>(options_.vtk_directory, "fluid");
+  coupling::SphereCouplingOptions co;
+  co.wall_scheme = wall_scheme(options_.boundary);
+  coupling_ = std::make_unique<coupling::SphereCoupling>(*solver_, co);
+  coupling::LubricationParameters lp;
+  lp.rho = 1.0;
+  lp.nu = units_->nu_lattice();
+  lp.cutoff = options_.lubrication_cutoff;
+  lubrication_ = std::make_unique<coupling::LubricationCorrection>(lp);
+  inlet_counter_ = std::make_unique<coupling::PlaneCrossingCounter>(0, inlet_x_);
+  outlet_counter_ = std::make_unique<coupling::PlaneCrossingCounter>(0, outlet_x_);
+
+  if (options_.vtk_every > 0)
+    vtk_ = std::make_unique<lbm::VtkSeriesWriter>(options_.vtk_directory, "fluid");
 }
 
 void FixLbmPore::print_setup() const {
   if (comm->me != 0) return;
   const auto& dims = frame_->dims;
-  const double u_lattice = std::abs(solver_->drive().kind == lbm::FlowDrive::kInletVelocity
-                                        ? solver_->drive().inlet_velocity
-                                        : 0.0);
-  char text[1024];
-  std::snprintf(text, sizeof text,
-                "fix lbm/pore: lattice %d x %d x %d (dx = %g), %s\n"
-                "fix lbm/pore: DEM step %g, fluid step %g = %d DEM steps; inlet lattice Mach %.3g; "
-                "pore diameter %.2f cells\n",
-                dims[0], dims[1], dims[2], options_.dx, units_->summary().c_str(), update->dt,
-                units_->dt_lbm(), options_.n_dem, u_lattice / kSoundSpeed, pore_diameter_lattice_);
+  const auto& drive = solver_->drive();
+  char text[1500];
+  int n = std::snprintf(
+      text, sizeof text,
+      "fix lbm/pore: lattice %d x %d x %d nodes (dx = %g), %s\n"
+      "fix lbm/pore: DEM step %g, fluid step %g = %d DEM steps; pore diameter %.2f cells\n",
+      dims[0], dims[1], dims[2], options_.dx, units_->summary().c_str(), update->dt,
+      units_->dt_lbm(), options_.n_dem, pore_diameter_lattice_);
+  if (drive.kind == lbm::FlowDrive::kInletVelocity)
+    n += std::snprintf(text + n, sizeof text - n,
+                       "fix lbm/pore: inlet velocity %g = %.4g lattice, lattice Mach %.3g\n",
+                       options_.drive_value, drive.inlet_velocity,
+                       std::abs(drive.inlet_velocity) / kSoundSpeed);
+  else
+    n += std::snprintf(text + n, sizeof text - n,
+                       "fix lbm/pore: pressure loss %g = %.4g lattice (density difference %.3g)\n",
+                       options_.drive_value, drive.pressure_loss, 3.0 * drive.pressure_loss);
+  n += std::snprintf(text + n, sizeof text - n,
+                     "fix lbm/pore: moving walls %s, lubrication %s (cutoff %g cells)%s\n",
+                     options_.boundary.c_str(), options_.lubrication ? "on" : "off",
+                     options_.lubrication_cutoff,
+                     has_gravity_ ? ", buoyancy -rho_f V g added (fix gravity found)" : "");
   if (screen) std::fputs(text, screen);
   if (logfile) std::fputs(text, logfile);
 }
 
-void FixLbmPore::setup(int) {
+void FixLbmPore::setup(int vflag) {
+  run_start_ = now();
+  run_fluid_steps_ = 0;
+  time_fluid_ = time_lubrication_ = time_diagnostics_ = 0.0;
+  if (resumed_) resume_mapping();
+  gather_particles();
+  update_particle_diagnostics();
   update_diagnostics();
   if (vtk_ && fluid_steps_ == 0) vtk_->write(*solver_, 0.0);
+  post_force(vflag);
 }
 
+// The hydrodynamic load of the last fluid step acts unchanged on every DEM substep (paper,
+// "Coupling of Fluid and Particles"); the lubrication correction and buoyancy follow the
+// particles every substep.
 void FixLbmPore::post_force(int) {
-  // The hydrodynamic force of the last fluid step acts on every DEM substep (paper,
-  // "Coupling of Fluid and Particles"). Added by the particle coupling stage.
+  double** f = atom->f;
+  double** torque = atom->torque;
+  const int* mask = atom->mask;
+  const int nlocal = atom->nlocal;
+  const double* radius = atom->radius;
+  for (int i = 0; i < nlocal; ++i) {
+    if (!(mask[i] & groupbit)) continue;
+    for (int a = 0; a < 3; ++a) f[i][a] += loads_[i][a];
+    if (torque)
+      for (int a = 0; a < 3; ++a) torque[i][a] += loads_[i][3 + a];
+    if (has_gravity_) {
+      const double volume = 4.0 / 3.0 * M_PI * radius[i] * radius[i] * radius[i];
+      for (int a = 0; a < 3; ++a) f[i][a] -= options_.rho * volume * gravity_[a];
+    }
+  }
+  if (options_.lubrication && list_) {
+    const double start = now();
+    add_lubrication(f);
+    time_lubrication_ += now() - start;
+  }
+}
+
+// Pair and wall lubrication on the owned atoms, from the fix's granular half neighbor list
+// (newton off: an owned-ghost pair is listed on both ranks and each side adds its own half).
+void FixLbmPore::add_lubrication(double** f) {
+  double** x = atom->x;
+  double** v = atom->v;
+  const double* radius = atom->radius;
+  const int* mask = atom->mask;
+  const int nlocal = atom->nlocal;
+  const double dx = options_.dx;
+  const double to_lattice_velocity = units_->dt_lbm() / dx;
+  const double force_unit = units_->force_unit();
+  const double cutoff = options_.lubrication_cutoff * dx;
+  for (int ii = 0; ii < list_->inum; ++ii) {
+    const int i = list_->ilist[ii];
+    if (!(mask[i] & groupbit)) continue;
+    const int* neighbors = list_->firstneigh[i];
+    for (int jj = 0; jj < list_->numneigh[i]; ++jj) {
+      const int j = neighbors[jj] & NEIGHMASK;
+      if (!(mask[j] & groupbit)) continue;
+      const coupling::Vec3 d{(x[j][0] - x[i][0]) / dx, (x[j][1] - x[i][1]) / dx,
+                             (x[j][2] - x[i][2]) / dx};
+      const double gap = std::sqrt(coupling::dot(d, d)) * dx - radius[i] - radius[j];
+      if (gap >= cutoff) continue;
+      const coupling::Vec3 vi{v[i][0] * to_lattice_velocity, v[i][1] * to_lattice_velocity,
+                              v[i][2] * to_lattice_velocity};
+      const coupling::Vec3 vj{v[j][0] * to_lattice_velocity, v[j][1] * to_lattice_velocity,
+                              v[j][2] * to_lattice_velocity};
+      const auto F = lubrication_->pair_force(radius[i] / dx, radius[j] / dx, d, vi, vj);
+      for (int a = 0; a < 3; ++a) f[i][a] += F[a] * force_unit;
+      if (j < nlocal)
+        for (int a = 0; a < 3; ++a) f[j][a] -= F[a] * force_unit;
+    }
+  }
+  std::vector<contact::SurfacePoint> points;
+  for (int i = 0; i < nlocal; ++i) {
+    if (!(mask[i] & groupbit)) continue;
+    surface_->find({x[i][0], x[i][1], x[i][2]}, radius[i] + cutoff, points);
+    if (points.empty()) continue;
+    const auto nearest = std::min_element(points.begin(), points.end(),
+                                           [](const auto& a, const auto& b) { return a.distance < b.distance; });
+    coupling::WallDistance wall;
+    wall.distance = std::max(nearest->distance, 0.0) / dx;
+    wall.normal = {nearest->normal[0], nearest->normal[1], nearest->normal[2]};
+    const coupling::Vec3 vi{v[i][0] * to_lattice_velocity, v[i][1] * to_lattice_velocity,
+                            v[i][2] * to_lattice_velocity};
+    const auto F = lubrication_->wall_force(radius[i] / dx, vi, wall);
+    for (int a = 0; a < 3; ++a) f[i][a] += F[a] * force_unit;
+  }
 }
 
 void FixLbmPore::end_of_step() {
@@ -204,13 +453,129 @@ void FixLbmPore::end_of_step() {
   fluid_step();
 }
 
+// Lattice-unit copies of the group's owned atoms and ghosts, with current ghost velocities.
+void FixLbmPore::gather_particles() {
+  comm->forward_comm_fix(this);
+  lbm_pore::AtomArrays atoms;
+  atoms.nlocal = atom->nlocal;
+  atoms.nghost = atom->nghost;
+  atoms.mask = atom->mask;
+  atoms.groupbit = groupbit;
+  atoms.tag = atom->tag;
+  atoms.x = atom->x;
+  atoms.v = atom->v;
+  atoms.omega = atom->omega_flag ? atom->omega : nullptr;
+  atoms.radius = atom->radius;
+  particles_.gather(atoms, *frame_, units_->dt_lbm());
+  view_of_atom_.assign(atom->nlocal + atom->nghost, -1);
+  for (std::size_t p = 0; p < particles_.size(); ++p) view_of_atom_[particles_.atom(p)] = int(p);
+}
+
+long long FixLbmPore::global_particle_count() const {
+  long long local = static_cast<long long>(particles_.num_owned()) +
+                    static_cast<long long>(coupling_->mapping().moving_cells().size());
+  long long total = 0;
+  MPI_Allreduce(&local, &total, 1, MPI_LONG_LONG, MPI_SUM, world);
+  return total;
+}
+
 void FixLbmPore::fluid_step() {
-  solver_->step();
+  const double start = now();
+  gather_particles();
+  check_particle_speed();
+  // Without particles (and none left to unmap) the step is the pure fluid step: a scene pays
+  // only for what it uses.
+  if (global_particle_count() == 0)
+    solver_->step();
+  else
+    coupling_->step(particles_.view());
+  store_loads();
   ++fluid_steps_;
-  check_fluid_state();
-  update_diagnostics();
+  ++run_fluid_steps_;
+  time_fluid_ += now() - start;
+  const double diagnostics_start = now();
+  // A full scan of the lattice costs a sizeable part of a step: the NaN/runaway guard runs
+  // every kCheckEvery fluid steps (a blow-up takes many steps to reach the particles), the
+  // fluid diagnostics only when thermo output asks for them.
+  if (fluid_steps_ % kCheckEvery == 0) check_fluid_state();
+  fluid_diagnostics_stale_ = true;
+  update_particle_diagnostics();
   if (vtk_ && fluid_steps_ % options_.vtk_every == 0)
     vtk_->write(*solver_, units_->time_to_physical(double(fluid_steps_)));
+  time_diagnostics_ += now() - diagnostics_start;
+}
+
+// The loads of the step, in script units, onto the atoms they belong to; ghosts' shares go
+// back to their owners (LIGGGHTS reverse communication, which also folds periodic images).
+void FixLbmPore::store_loads() {
+  const int ntotal = atom->nlocal + atom->nghost;
+  for (int i = 0; i < ntotal; ++i)
+    for (int k = 0; k < kLoadsPerAtom; ++k) loads_[i][k] = 0.0;
+  const auto& loads = coupling_->loads();
+  if (loads.force.size() != particles_.size()) return;  // pure fluid step: no loads
+  const double force_unit = units_->force_unit();
+  const double torque_unit = units_->torque_to_physical(1.0);
+  for (std::size_t p = 0; p < particles_.size(); ++p) {
+    const int i = particles_.atom(p);
+    for (int a = 0; a < 3; ++a) {
+      loads_[i][a] = loads.force[p][a] * force_unit;
+      loads_[i][3 + a] = loads.torque[p][a] * torque_unit;
+    }
+  }
+  comm->reverse_comm_fix(this);
+}
+
+// After read_restart: the checkpoint holds the node types of the step it was written at,
+// with zeros inside the particles. The mapping object starts empty, so the moving nodes
+// become fluid at rest and the particles are mapped afresh; where the restart was written
+// at a fluid step (a multiple of n_dem) the same nodes are covered again and the
+// continuation is exact.
+void FixLbmPore::resume_mapping() {
+  resumed_ = false;
+  auto& types = solver_->node_types();
+  auto& f = solver_->populations();
+  for (std::size_t cell = 0; cell < types.size(); ++cell) {
+    if (types[cell] != lbm::kMoving) continue;
+    types[cell] = lbm::kFluid;
+    for (int q = 0; q < lbm::D3Q19::Q; ++q) f.at(q, cell) = lbm::equilibrium(q, 1.0, {0.0, 0.0, 0.0});
+  }
+  gather_particles();
+  coupling_->map_and_refill(particles_.view());
+}
+
+// Guard: a particle may not cross more than kMaxShiftPerFluidStep cells per fluid step.
+void FixLbmPore::check_particle_speed() {
+  const auto view = particles_.view();
+  double fastest = 0.0;
+  int fastest_tag = -1;
+  for (std::size_t p = 0; p < view.num_owned; ++p) {
+    const auto u = view.v(p);
+    double speed = std::sqrt(coupling::dot(u, u));
+    if (!std::isfinite(speed)) speed = std::numeric_limits<double>::infinity();  // NaN -> stop
+    if (speed > fastest) {
+      fastest = speed;
+      fastest_tag = view.identifier(p);
+    }
+  }
+  struct {
+    double value;
+    int rank;
+  } local{fastest, comm->me}, global{0.0, 0};
+  MPI_Allreduce(&local, &global, 1, MPI_DOUBLE_INT, MPI_MAXLOC, world);
+  diagnostics_[kMaxParticleShift] = global.value;
+  if (global.value <= kMaxShiftPerFluidStep) return;
+  if (comm->me == global.rank) {
+    char text[600];
+    std::snprintf(text, sizeof text,
+                  "fix lbm/pore: particle %d moves %.3g cells per fluid step at DEM step " BIGINT_FORMAT
+                  " (limit %.2f): the fluid cannot follow it. Likely cause: a contact too stiff "
+                  "for the DEM step, or n_dem too large for this speed; lower n_dem or the time "
+                  "step",
+                  fastest_tag, global.value, update->ntimestep, kMaxShiftPerFluidStep);
+    error->one(FLERR, text);
+  }
+  MPI_Barrier(world);
+  error->all(FLERR, "fix lbm/pore: a particle moves too fast for the lattice (see the message of the rank that found it)");
 }
 
 // NaN or runaway speed stops the run, naming the step, the node and the likely cause.
@@ -233,46 +598,206 @@ void FixLbmPore::check_fluid_state() {
   error->all(FLERR, "fix lbm/pore: fluid became unstable (see the message of the rank that found it)");
 }
 
+// Deposits and particle fluxes (paper Sec. III). A particle is bonded when it lies within
+// the attraction range of another particle (cohesion, 0.03 (Ri + Rj)) or of the wall
+// (adhesion, 0.03 R).
+void FixLbmPore::update_particle_diagnostics() {
+  const auto view = particles_.view();
+  std::vector<char> bonded(view.num_total, 0);
+  double** x = atom->x;
+  const double* radius = atom->radius;
+  if (list_) {
+    for (int ii = 0; ii < list_->inum; ++ii) {
+      const int i = list_->ilist[ii];
+      if (i >= int(view_of_atom_.size()) || view_of_atom_[i] < 0) continue;
+      const int* neighbors = list_->firstneigh[i];
+      for (int jj = 0; jj < list_->numneigh[i]; ++jj) {
+        const int j = neighbors[jj] & NEIGHMASK;
+        if (j >= int(view_of_atom_.size()) || view_of_atom_[j] < 0) continue;
+        const double d[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
+        const double gap = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) - radius[i] - radius[j];
+        if (gap <= contact::kAttractionRangeFactor * (radius[i] + radius[j])) {
+          bonded[view_of_atom_[i]] = 1;
+          bonded[view_of_atom_[j]] = 1;
+        }
+      }
+    }
+  }
+  std::vector<contact::SurfacePoint> points;
+  double force_x = 0.0;
+  for (std::size_t p = 0; p < view.num_owned; ++p) {
+    const int i = particles_.atom(p);
+    force_x += loads_[i][0];
+    if (bonded[p]) continue;
+    surface_->find({x[i][0], x[i][1], x[i][2]},
+                   radius[i] * (1.0 + contact::kAttractionRangeFactor), points);
+    bonded[p] = !points.empty();
+  }
+  coupling::DepositionCriteria criteria;
+  if (options_.deposit_speed >= 0.0)
+    criteria.speed_threshold = units_->velocity_to_lattice(options_.deposit_speed);
+  else if (options_.drive == lbm_pore::PoreOptions::Drive::kVelocity)
+    criteria.speed_threshold = 0.01 * std::abs(solver_->drive().inlet_velocity);
+  const lbm::Communicator& c = solver_->decomposition().comm;
+  const auto deposit = coupling::deposited(view, bonded, pore_, criteria, c);
+  const double volume_unit = options_.dx * options_.dx * options_.dx;
+  auto& v = diagnostics_;
+  v[kDepositedVolume] = deposit.volume * volume_unit;
+  v[kDepositedCount] = double(deposit.count);
+  // L_dep = V_dep / (pi D^2 / 4) with the pore's diameter (the equivalent one for a voxel file).
+  v[kDepositedLength] =
+      deposit.volume / (M_PI * pore_diameter_lattice_ * pore_diameter_lattice_ / 4.0) * options_.dx;
+  const auto in = inlet_counter_->update(view, frame_->dims[0], c);
+  const auto out = outlet_counter_->update(view, frame_->dims[0], c);
+  v[kParticlesIn] += double(in.count);
+  v[kParticlesOut] += double(out.count);
+  v[kParticlesInVolume] += in.volume * volume_unit;
+  v[kParticlesOutVolume] += out.volume * volume_unit;
+  MPI_Allreduce(&force_x, &v[kHydroForceX], 1, MPI_DOUBLE, MPI_SUM, world);
+}
+
 void FixLbmPore::update_diagnostics() {
+  fluid_diagnostics_stale_ = false;
   auto& v = diagnostics_;
   v[kPressureLoss] = units_->pressure_to_physical(lbm::pressure_loss(*solver_));
   // plane_flux is in lattice volume per lattice time step.
   const double flux_unit = options_.dx * options_.dx * options_.dx / units_->dt_lbm();
-  v[kFluidFluxInlet] = lbm::plane_flux(*solver_, 0, inlet_plane_) * flux_unit;
-  v[kFluidFluxOutlet] = lbm::plane_flux(*solver_, 0, outlet_plane_) * flux_unit;
+  v[kFluidFluxInlet] = lbm::plane_flux(*solver_, 0, 0) * flux_unit;
+  v[kFluidFluxOutlet] = lbm::plane_flux(*solver_, 0, frame_->dims[0] - 1) * flux_unit;
   const double speed = lbm::max_speed(*solver_);
   v[kMaxFluidSpeed] = units_->velocity_to_physical(speed);
   v[kLatticeMach] = speed / kSoundSpeed;
   v[kFluidSteps] = double(fluid_steps_);
 }
 
+// Called on every rank by thermo output and variables, so the reductions inside are safe.
 double FixLbmPore::compute_vector(int index) {
   if (index < 0 || index >= kNumDiagnostics) return 0.0;
+  if (fluid_diagnostics_stale_) update_diagnostics();
   return diagnostics_[index];
 }
 
-// Restart: the particles travel in LIGGGHTS's restart file; the fluid goes to a companion
-// checkpoint (one file per rank) whose name is stored in the restart file.
+// Where the time of a run went: the fluid steps (with mapping and moving walls), the
+// lubrication, the diagnostics, and the rest (DEM), summed over the run on rank 0.
+void FixLbmPore::post_run() {
+  if (comm->me != 0 || run_fluid_steps_ == 0) return;
+  const double total = now() - run_start_;
+  const auto& t = coupling_->times();
+  const double coupling = t.mapping + t.refill + t.moving_walls + t.force;
+  char text[800];
+  std::snprintf(text, sizeof text,
+                "fix lbm/pore: %lld fluid steps in %.3f s: fluid %.3f s (of which mapping, refill, "
+                "moving walls and force %.3f s since the lattice was built), lubrication %.3f s, "
+                "diagnostics %.3f s, DEM and the rest %.3f s; %.3g s per fluid step\n",
+                run_fluid_steps_, total, time_fluid_, coupling, time_lubrication_, time_diagnostics_,
+                total - time_fluid_ - time_lubrication_ - time_diagnostics_,
+                total / double(run_fluid_steps_));
+  if (screen) std::fputs(text, screen);
+  if (logfile) std::fputs(text, logfile);
+}
+
+// Restart: the particles travel in LIGGGHTS's restart file with their loads; the fluid goes
+// to a companion checkpoint (one file per rank) whose name is stored in the restart file.
 void FixLbmPore::write_restart(FILE* fp) {
   std::string prefix = options_.checkpoint_prefix.empty() ? std::string(id) + ".fluid"
                                                           : options_.checkpoint_prefix;
   const std::string path = prefix + "." + std::to_string(update->ntimestep);
+  if (update->ntimestep % options_.n_dem != 0 && comm->me == 0)
+    error->warning(FLERR, "fix lbm/pore: restart written between fluid steps (not a multiple of "
+                          "n_dem): the continued run will differ slightly from an uninterrupted one");
   try {
     lbm::write_checkpoint(*solver_, path);
   } catch (const lbm::InputError& e) {
     error->one(FLERR, e.what());
   }
   if (comm->me == 0) {
-    const int size = static_cast<int>(path.size()) + 1;
+    const int size = static_cast<int>(path.size()) + 1 + 8 * kNumDiagnostics;
     std::fwrite(&size, sizeof(int), 1, fp);
-    std::fwrite(path.c_str(), 1, size, fp);
+    std::fwrite(diagnostics_.data(), sizeof(double), kNumDiagnostics, fp);
+    std::fwrite(path.c_str(), 1, path.size() + 1, fp);
   }
 }
 
 void FixLbmPore::restart(char* buf) {
-  // buf holds the path write_restart stored (LIGGGHTS strips its size word).
-  resume_checkpoint_ = std::string(buf);
+  // buf: the diagnostics (cumulative particle fluxes), then the checkpoint path.
+  std::memcpy(diagnostics_.data(), buf, sizeof(double) * kNumDiagnostics);
+  resume_checkpoint_ = std::string(buf + sizeof(double) * kNumDiagnostics);
 }
 
-const lbm::VoxelGeometry& FixLbmPore::geometry() const { return *geometry_; }
+void FixLbmPore::grow_arrays(int nmax) {
+  memory->grow(loads_, nmax, kLoadsPerAtom, "lbm/pore:loads");
+  for (int i = nmax_; i < nmax; ++i)
+    for (int k = 0; k < kLoadsPerAtom; ++k) loads_[i][k] = 0.0;
+  nmax_ = nmax;
+}
+
+void FixLbmPore::copy_arrays(int i, int j, int) {
+  for (int k = 0; k < kLoadsPerAtom; ++k) loads_[j][k] = loads_[i][k];
+}
+
+int FixLbmPore::pack_exchange(int i, double* buf) {
+  for (int k = 0; k < kLoadsPerAtom; ++k) buf[k] = loads_[i][k];
+  return kLoadsPerAtom;
+}
+
+int FixLbmPore::unpack_exchange(int nlocal, double* buf) {
+  for (int k = 0; k < kLoadsPerAtom; ++k) loads_[nlocal][k] = buf[k];
+  return kLoadsPerAtom;
+}
+
+int FixLbmPore::pack_restart(int i, double* buf) {
+  buf[0] = kLoadsPerAtom + 1;
+  for (int k = 0; k < kLoadsPerAtom; ++k) buf[1 + k] = loads_[i][k];
+  return kLoadsPerAtom + 1;
+}
+
+void FixLbmPore::unpack_restart(int nlocal, int nth) {
+  double** extra = atom->extra;
+  int m = 0;
+  for (int n = 0; n < nth; ++n) m += static_cast<int>(extra[nlocal][m]);
+  ++m;
+  for (int k = 0; k < kLoadsPerAtom; ++k) loads_[nlocal][k] = extra[nlocal][m++];
+}
+
+int FixLbmPore::size_restart(int) { return kLoadsPerAtom + 1; }
+int FixLbmPore::maxsize_restart() { return kLoadsPerAtom + 1; }
+
+int FixLbmPore::pack_comm(int n, int* list, double* buf, int, int*) {
+  double** v = atom->v;
+  double** omega = atom->omega;
+  int m = 0;
+  for (int k = 0; k < n; ++k) {
+    const int i = list[k];
+    for (int a = 0; a < 3; ++a) buf[m++] = v[i][a];
+    for (int a = 0; a < 3; ++a) buf[m++] = omega ? omega[i][a] : 0.0;
+  }
+  return m;
+}
+
+void FixLbmPore::unpack_comm(int n, int first, double* buf) {
+  double** v = atom->v;
+  double** omega = atom->omega;
+  int m = 0;
+  for (int i = first; i < first + n; ++i) {
+    for (int a = 0; a < 3; ++a) v[i][a] = buf[m++];
+    for (int a = 0; a < 3; ++a) {
+      if (omega) omega[i][a] = buf[m];
+      ++m;
+    }
+  }
+}
+
+int FixLbmPore::pack_reverse_comm(int n, int first, double* buf) {
+  int m = 0;
+  for (int i = first; i < first + n; ++i)
+    for (int k = 0; k < kLoadsPerAtom; ++k) buf[m++] = loads_[i][k];
+  return m;
+}
+
+void FixLbmPore::unpack_reverse_comm(int n, int* list, double* buf) {
+  int m = 0;
+  for (int k = 0; k < n; ++k)
+    for (int q = 0; q < kLoadsPerAtom; ++q) loads_[list[k]][q] += buf[m++];
+}
+
 const coupling::LatticeFrame& FixLbmPore::frame() const { return *frame_; }

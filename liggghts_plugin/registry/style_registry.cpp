@@ -13,6 +13,7 @@
 // Our styles.
 #include "dashdot/compute_lbm_bonds.h"
 #include "dashdot/pair_lbm_dashdot.h"
+#include "lbm_pore/fix_lbm_pore.h"
 #include "wall_voxel/fix_wall_voxel.h"
 
 namespace lbm_pore {
@@ -43,6 +44,7 @@ const PairStyle kPairStyles[] = {
 };
 const FixStyle kFixStyles[] = {
     {"wall/voxel", &create_fix<LAMMPS_NS::FixWallVoxel>},
+    {"lbm/pore", &create_fix<LAMMPS_NS::FixLbmPore>},
 };
 const ComputeStyle kComputeStyles[] = {
     {"lbm/bonds", &create_compute<LAMMPS_NS::ComputeLbmBonds>},

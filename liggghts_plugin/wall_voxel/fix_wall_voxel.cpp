@@ -10,7 +10,9 @@
 #include "atom.h"
 #include "contact/dash_dot.h"
 #include "error.h"
+#include "modify.h"
 #include "lbm/input_error.h"
+#include "lbm_pore/fix_lbm_pore.h"
 #include "plugin_common/parse_number.h"
 #include "update.h"
 #include "wall_geometry_source.h"
@@ -30,6 +32,7 @@ constexpr double kSameContactCosine = 0.9;
 
 FixWallVoxel::FixWallVoxel(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg, arg) {
   lbm_pore::WallGeometrySource source;
+  std::shared_ptr<const lbm::VoxelGeometry> shared;  // from 'lbm <fix-ID>'
   int iarg = 3;
   while (iarg < narg) {
     const std::string key = arg[iarg];
@@ -39,7 +42,11 @@ FixWallVoxel::FixWallVoxel(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg, a
                            std::to_string(count) + " value(s)")
                               .c_str());
     };
-    if (key == "file") {
+    if (key == "lbm") {
+      need(1);
+      shared = geometry_of_lbm_fix(arg[iarg + 1]);
+      iarg += 2;
+    } else if (key == "file") {
       need(1);
       source.kind = lbm_pore::WallGeometrySource::Kind::kFile;
       source.path = arg[iarg + 1];
@@ -74,14 +81,17 @@ FixWallVoxel::FixWallVoxel(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg, a
       parse_contact_keyword(iarg, narg, arg);
     }
   }
-  if (source.kind == lbm_pore::WallGeometrySource::Kind::kNone)
-    error->all(FLERR, "fix wall/voxel: no geometry: give keyword 'file <path>' or 'pore'");
+  if (shared && source.kind != lbm_pore::WallGeometrySource::Kind::kNone)
+    error->all(FLERR, "fix wall/voxel: give one geometry: 'lbm <fix-ID>', 'file <path>' or 'pore'");
+  if (!shared && source.kind == lbm_pore::WallGeometrySource::Kind::kNone)
+    error->all(FLERR, "fix wall/voxel: no geometry: give keyword 'lbm <fix-ID>' (the geometry of "
+                      "fix lbm/pore), 'file <path>' or 'pore'");
   // Defaults tied to the wall stiffness unless given (LIGGGHTS hooke's k_t = 2/7 k_n).
   if (!kt_given_) params_.friction.k_t = 2.0 / 7.0 * params_.normal.k_n;
   if (!tangential_damping_given_) params_.friction.damping_ratio = params_.normal.damping_ratio;
 
   try {
-    use_geometry(lbm_pore::acquire_wall_geometry(source));
+    use_geometry(shared ? shared : lbm_pore::acquire_wall_geometry(source));
   } catch (const lbm::InputError& e) {
     error->all(FLERR, (std::string(kCommand) + ": " + e.what()).c_str());
   }
@@ -128,6 +138,19 @@ void FixWallVoxel::parse_contact_keyword(int& iarg, int narg, char** arg) {
 FixWallVoxel::~FixWallVoxel() { atom->delete_callback(id, 0); }
 
 int FixWallVoxel::setmask() { return FixConst::POST_FORCE; }
+
+// The geometry fix lbm/pore owns, so the walls the particles touch are the fluid's walls.
+std::shared_ptr<const lbm::VoxelGeometry> FixWallVoxel::geometry_of_lbm_fix(const char* fix_id) {
+  const int index = modify->find_fix(fix_id);
+  if (index < 0)
+    error->all(FLERR, (std::string(kCommand) + ": lbm: no fix with ID '" + fix_id +
+                       "' (define fix lbm/pore before fix wall/voxel)").c_str());
+  auto* lbm_fix = dynamic_cast<FixLbmPore*>(modify->fix[index]);
+  if (!lbm_fix)
+    error->all(FLERR, (std::string(kCommand) + ": lbm: fix '" + fix_id + "' is " +
+                       modify->fix[index]->style + ", not lbm/pore").c_str());
+  return lbm_fix->shared_geometry();
+}
 
 void FixWallVoxel::use_geometry(std::shared_ptr<const lbm::VoxelGeometry> geometry) {
   geometry_ = std::move(geometry);

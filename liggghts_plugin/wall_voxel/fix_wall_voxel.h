@@ -1,5 +1,5 @@
 #pragma once
-// fix ID group wall/voxel (file <path> | pore [pore keywords]) [kw v] [ka v] [damping v]
+// fix ID group wall/voxel (lbm <fix-ID> | file <path> | pore [pore keywords]) [kw v] [ka v] [damping v]
 //                          [mu v] [kt v] [tangential_damping v]
 //
 // Particle-wall contact of the paper (Jaeger et al., Eqs. 4-6) against a static voxel
@@ -44,6 +44,7 @@ class FixWallVoxel : public Fix {
 
  private:
   void parse_contact_keyword(int& iarg, int narg, char** arg);
+  std::shared_ptr<const lbm::VoxelGeometry> geometry_of_lbm_fix(const char* fix_id);
   void check_time_step();
 
   std::shared_ptr<const lbm::VoxelGeometry> geometry_;

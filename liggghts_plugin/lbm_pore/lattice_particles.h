@@ -1,0 +1,44 @@
+#pragma once
+// The group's atoms as the coupling sees them: lattice-unit copies of positions, velocities,
+// angular velocities and radii, owned atoms first and then ghosts, behind a
+// coupling::ParticleView, with the atom index each entry came from so loads computed per
+// entry go back to the right atom. No LIGGGHTS dependency: the fix passes raw arrays, a test
+// can pass its own.
+#include <cstddef>
+#include <vector>
+
+#include "coupling/lattice_frame.h"
+#include "coupling/particle_view.h"
+
+namespace lbm_pore {
+
+struct AtomArrays {
+  int nlocal = 0, nghost = 0;
+  const int* mask = nullptr;  // null: every atom is in the group
+  int groupbit = 0;
+  const int* tag = nullptr;
+  double* const* x = nullptr;
+  double* const* v = nullptr;
+  double* const* omega = nullptr;  // null: not rotating
+  const double* radius = nullptr;
+};
+
+class LatticeParticles {
+ public:
+  // velocity_to_lattice: factor dt_lbm / dx; angular velocities scale with dt_lbm alone.
+  void gather(const AtomArrays& atoms, const coupling::LatticeFrame& frame, double dt_lbm);
+
+  coupling::ParticleView view() const;
+  std::size_t size() const { return atom_.size(); }
+  std::size_t num_owned() const { return num_owned_; }
+  // LIGGGHTS atom index (0..nlocal+nghost) of view entry p.
+  int atom(std::size_t p) const { return atom_[p]; }
+
+ private:
+  std::size_t num_owned_ = 0;
+  bool rotating_ = false;
+  std::vector<int> atom_, id_;
+  std::vector<double> position_, velocity_, angular_velocity_, radius_;
+};
+
+}  // namespace lbm_pore
