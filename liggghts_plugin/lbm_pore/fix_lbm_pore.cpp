@@ -49,6 +49,10 @@ constexpr double kSoundSpeed = 0.5773502691896258;
 // one layer of nodes per step, and the refill assumes so (DESIGN.md, stability guards).
 constexpr double kMaxShiftPerFluidStep = 0.5;
 constexpr int kLoadsPerAtom = 6;  // force, torque
+// Deposited particles are "at zero or very low velocity, such that moving flocks are not
+// counted" (paper Sec. III): slower than this fraction of the inlet velocity. Flocks move with
+// the flow, at or above the inlet velocity; particles in a clog creep far slower.
+constexpr double kDepositSpeedFraction = 0.1;
 constexpr int kCheckEvery = 10;   // fluid steps between NaN/runaway scans of the lattice
 
 int cells(double length, double dx) { return static_cast<int>(std::lround(length / dx)); }
@@ -186,7 +190,9 @@ void FixLbmPore::build_geometry() {
     geometry_ = std::make_shared<lbm::VoxelGeometry>(lbm::make_pore_scene(spec, dx, origin));
     const auto r = lbm::regions_of(spec);
     pore_.axis = 0;
-    pore_.start = r.pore_begin - 0.5;
+    // "Located inside the pore radius" (paper Sec. III): the pore's cylinder, extended
+    // upstream through the free region so a clog sitting in the pore's mouth counts too.
+    pore_.start = r.inlet_end - 0.5;
     pore_.end = r.pore_end - 0.5;
     pore_.centre = {r.axis_y, r.axis_z};
     pore_.diameter = spec.pore_diameter;
@@ -637,7 +643,7 @@ void FixLbmPore::update_particle_diagnostics() {
   if (options_.deposit_speed >= 0.0)
     criteria.speed_threshold = units_->velocity_to_lattice(options_.deposit_speed);
   else if (options_.drive == lbm_pore::PoreOptions::Drive::kVelocity)
-    criteria.speed_threshold = 0.01 * std::abs(solver_->drive().inlet_velocity);
+    criteria.speed_threshold = kDepositSpeedFraction * std::abs(solver_->drive().inlet_velocity);
   const lbm::Communicator& c = solver_->decomposition().comm;
   const auto deposit = coupling::deposited(view, bonded, pore_, criteria, c);
   const double volume_unit = options_.dx * options_.dx * options_.dx;
@@ -692,6 +698,10 @@ void FixLbmPore::post_run() {
                 run_fluid_steps_, total, time_fluid_, coupling, time_lubrication_, time_diagnostics_,
                 total - time_fluid_ - time_lubrication_ - time_diagnostics_,
                 total / double(run_fluid_steps_));
+  std::snprintf(text + std::strlen(text), sizeof text - std::strlen(text),
+                "fix lbm/pore: coupling stages since the lattice was built: mapping %.3f s, refill "
+                "%.3f s, moving walls %.3f s, force %.3f s, collide-stream %.3f s\n",
+                t.mapping, t.refill, t.moving_walls, t.force, t.collide_stream);
   if (screen) std::fputs(text, screen);
   if (logfile) std::fputs(text, logfile);
 }

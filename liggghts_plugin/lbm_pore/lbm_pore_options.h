@@ -30,7 +30,7 @@ struct PoreOptions {
   std::string boundary = "mls";  // bounce_back | bouzidi | mls
   bool lubrication = true;
   double lubrication_cutoff = 2.0 / 3.0;  // in lattice cells
-  double deposit_speed = -1.0;            // < 0: 1 % of the drive velocity scale
+  double deposit_speed = -1.0;            // < 0: 10 % of the inlet velocity (1e-4 lattice with a pressure drive)
   // Output.
   int vtk_every = 0;
   std::string vtk_directory = "lbm_vtk";

@@ -34,7 +34,7 @@ void moments(const lbm::PopulationField& f, std::size_t cell, const std::array<d
   for (int a = 0; a < 3; ++a) u[a] = (j[a] - 0.5 * F[a]) / rho;
 }
 
-void apply_mei_luo_shyy(const SphereLinks& sl, lbm::FluidSolver& solver) {
+void apply_mei_luo_shyy(const SphereLinks& sl, lbm::FluidSolver& solver, FluidMomentCache& cache) {
   const auto& layout = solver.layout();
   const auto& type = solver.node_types();
   lbm::PopulationField& f = solver.populations();
@@ -47,9 +47,10 @@ void apply_mei_luo_shyy(const SphereLinks& sl, lbm::FluidSolver& solver) {
     const std::size_t x = link.fluid_cell;
     const double delta = link.fraction;
     const Vec3& uw = link.wall_velocity;
-    double rho_f;
-    Vec3 u_f, u_bf;
-    moments(f, x, F, rho_f, u_f);
+    const auto& m = cache.moments(f, x, F);
+    const double rho_f = m[0];
+    const Vec3 u_f{m[1], m[2], m[3]};
+    Vec3 u_bf;
     double chi;
     if (delta >= 0.5) {
       const double b = 1.5 / delta;
@@ -58,8 +59,8 @@ void apply_mei_luo_shyy(const SphereLinks& sl, lbm::FluidSolver& solver) {
     } else {
       const std::size_t xff = x - off;
       if (type[xff] == lbm::kFluid) {
-        double rho_ff;
-        moments(f, xff, F, rho_ff, u_bf);
+        const auto& mff = cache.moments(f, xff, F);
+        u_bf = {mff[1], mff[2], mff[3]};
       } else {
         u_bf = u_f;
       }
@@ -77,7 +78,31 @@ void apply_mei_luo_shyy(const SphereLinks& sl, lbm::FluidSolver& solver) {
 
 }  // namespace
 
-void apply_moving_walls(const SphereLinks& links, MovingWallScheme scheme, lbm::FluidSolver& solver) {
+void FluidMomentCache::begin(std::size_t num_cells) {
+  if (stamp_.size() != num_cells || generation_ == UINT32_MAX) {
+    stamp_.assign(num_cells, 0);
+    value_.resize(num_cells);
+    generation_ = 0;
+  }
+  ++generation_;
+}
+
+const std::array<double, 4>& FluidMomentCache::moments(const lbm::PopulationField& f, std::size_t cell,
+                                                       const std::array<double, 3>& body_force) {
+  auto& v = value_[cell];
+  if (stamp_[cell] != generation_) {
+    stamp_[cell] = generation_;
+    Vec3 u;
+    coupling::moments(f, cell, body_force, v[0], u);
+    v[1] = u[0];
+    v[2] = u[1];
+    v[3] = u[2];
+  }
+  return v;
+}
+
+void apply_moving_walls(const SphereLinks& links, MovingWallScheme scheme, lbm::FluidSolver& solver,
+                        FluidMomentCache* cache) {
   switch (scheme) {
     case MovingWallScheme::kBounceBack:
       lbm::apply_links(links.links, lbm::LinkScheme::kBounceBack, solver.parameters().rho0,
@@ -87,9 +112,13 @@ void apply_moving_walls(const SphereLinks& links, MovingWallScheme scheme, lbm::
       lbm::apply_links(links.links, lbm::LinkScheme::kBouzidi, solver.parameters().rho0,
                        solver.layout(), solver.node_types(), solver.populations());
       break;
-    case MovingWallScheme::kMeiLuoShyy:
-      apply_mei_luo_shyy(links, solver);
+    case MovingWallScheme::kMeiLuoShyy: {
+      FluidMomentCache local;
+      FluidMomentCache& c = cache ? *cache : local;
+      c.begin(solver.layout().num_cells());
+      apply_mei_luo_shyy(links, solver, c);
       break;
+    }
   }
 }
 

@@ -48,7 +48,7 @@ void SphereCoupling::apply_moving_walls_and_force(const ParticleView& view) {
   {
     StageTimer t(times_.moving_walls);
     build_sphere_links(mapping_, view, solver_.node_types(), links_);
-    apply_moving_walls(links_, options_.wall_scheme, solver_);
+    apply_moving_walls(links_, options_.wall_scheme, solver_, &moment_cache_);
   }
   StageTimer t(times_.force);
   loads_.reset(view.num_total);

@@ -64,6 +64,7 @@ class SphereCoupling {
   SphereCouplingOptions options_;
   SphereMapping mapping_;
   SphereLinks links_;
+  FluidMomentCache moment_cache_;  // reused every step
   HydrodynamicLoads loads_;
   MassChange mass_;
   StageTimes times_;

@@ -1,4 +1,7 @@
 #pragma once
+#include <array>
+#include <cstdint>
+#include <vector>
 // How the population returning from a moving sphere to a fluid node is reconstructed
 // (waLBerla's momentum_exchange_method/boundary/). The scheme is chosen once per call; each
 // is a loop of its own with no per-link branching on the option.
@@ -31,7 +34,27 @@ enum class MovingWallScheme {
 
 const char* to_string(MovingWallScheme scheme);
 
-// Writes the returning population of every link into the wall node's slot.
-void apply_moving_walls(const SphereLinks& links, MovingWallScheme scheme, lbm::FluidSolver& solver);
+// Density and velocity of fluid nodes, computed at most once per node per call. A node next
+// to a sphere has several links (about five) and each Mei-Luo-Shyy link reads the moments of
+// one or two nodes: 19 loads from 19 arrays each, the scheme's main cost. Reused between
+// calls so its arrays are allocated once; a generation counter invalidates it in O(1).
+class FluidMomentCache {
+ public:
+  // Starts a new call: every cached value is stale.
+  void begin(std::size_t num_cells);
+  // rho, u_x, u_y, u_z at `cell` (velocity with the body-force shift -F/2).
+  const std::array<double, 4>& moments(const lbm::PopulationField& f, std::size_t cell,
+                                       const std::array<double, 3>& body_force);
+
+ private:
+  std::vector<std::uint32_t> stamp_;
+  std::vector<std::array<double, 4>> value_;
+  std::uint32_t generation_ = 0;
+};
+
+// Writes the returning population of every link into the wall node's slot. `cache` may be
+// null (a temporary one is used); pass a long-lived one when calling every step.
+void apply_moving_walls(const SphereLinks& links, MovingWallScheme scheme, lbm::FluidSolver& solver,
+                        FluidMomentCache* cache = nullptr);
 
 }  // namespace coupling
