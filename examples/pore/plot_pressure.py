@@ -2,11 +2,12 @@
 """Plot the pressure loss across the pore against time from a LIGGGHTS log, marking the
 erosive bursts: sudden drops of the pressure loss (paper, Figs. 2-3).
 
-Usage: plot_pressure.py log.liggghts [--out pressure.png] [--drop 0.2] [--window 5]
+Usage: plot_pressure.py log.liggghts [--fix pore] [--out pressure_loss.png] [--drop 0.2] [--window 5]
 
 The log must contain a thermo block whose header has the columns `Step` and the fix's
-pressure loss, e.g. `thermo_style custom step f_pore[1] f_pore[6] ...` (the column named
-f_<ID>[1]). A burst is a fall of the pressure loss by more than `--drop` (fraction of the
+pressure loss, e.g. `thermo_style custom step f_pore[1] f_pore[6] ...` (LIGGGHTS prints the
+header as pore[1], pore[6]). With the deposited volume f_<ID>[6] in the block as well, it is
+drawn on a second axis (the paper relates the pressure peaks to V_dep). A burst is a fall of the pressure loss by more than `--drop` (fraction of the
 preceding peak) within `--window` thermo rows. Prints each burst as
 `BURST step peak after drop_fraction` and writes the plot.
 """
@@ -52,18 +53,27 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("log")
     parser.add_argument("--out", default="pressure_loss.png")
+    parser.add_argument("--fix", default="pore", help="ID of the fix lbm/pore (default pore)")
     parser.add_argument("--column", default=None, help="thermo column of the pressure loss")
     parser.add_argument("--drop", type=float, default=0.2)
     parser.add_argument("--window", type=int, default=5)
     args = parser.parse_args()
     header, rows = read_thermo(args.log)
-    column = args.column or next((h for h in header if h.startswith("f_") and h.endswith("[1]")), None)
+    def find(index):
+        for name in (f"f_{args.fix}[{index}]", f"{args.fix}[{index}]"):
+            if name in header:
+                return name
+        return None
+
+    column = args.column or find(1)
     if column not in header:
         sys.exit(f"{args.log}: no column {column!r} in thermo header {header}")
     c = header.index(column)
     steps = [r[0] for r in rows]
     pressure = [r[c] for r in rows]
     bursts = find_bursts(steps, pressure, args.drop, args.window)
+    deposit_column = find(6)
+    deposits = [r[header.index(deposit_column)] for r in rows] if deposit_column else None
     for peak, after in bursts:
         print(f"BURST step {steps[peak]:.0f} peak {pressure[peak]:.6g} after {pressure[after]:.6g} "
               f"drop {1 - pressure[after] / pressure[peak]:.3f}")
@@ -80,6 +90,10 @@ def main():
     for peak, after in bursts:
         ax.axvspan(steps[peak], steps[after], color="tab:red", alpha=0.25)
         ax.plot([steps[peak]], [pressure[peak]], "v", color="tab:red")
+    if deposits:
+        ax2 = ax.twinx()
+        ax2.plot(steps, deposits, lw=1.0, color="tab:green", label="deposited volume")
+        ax2.set_ylabel(f"deposited volume V_dep ({deposit_column})", color="tab:green")
     ax.set_xlabel("DEM step")
     ax.set_ylabel(f"pressure loss ({column})")
     ax.set_title(f"{len(bursts)} erosive burst(s) marked")

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <limits>
 
@@ -549,6 +550,22 @@ void FixLbmPore::resume_mapping() {
   coupling_->map_and_refill(particles_.view());
 }
 
+// Error::one aborts at once: its message would be lost in a buffered screen and it never
+// reaches the log file, so write both and flush first.
+void FixLbmPore::stop_on_this_rank(const char* text) {
+  if (screen) {
+    std::fprintf(screen, "ERROR on proc %d: %s\n", comm->me, text);
+    std::fflush(screen);
+  }
+  if (logfile) {
+    std::fprintf(logfile, "ERROR on proc %d: %s\n", comm->me, text);
+    std::fflush(logfile);
+  }
+  std::fprintf(stderr, "ERROR on proc %d: %s\n", comm->me, text);
+  error->one(FLERR, text);
+  std::abort();  // not reached: Error::one aborts MPI
+}
+
 // Guard: a particle may not cross more than kMaxShiftPerFluidStep cells per fluid step.
 void FixLbmPore::check_particle_speed() {
   const auto view = particles_.view();
@@ -578,7 +595,7 @@ void FixLbmPore::check_particle_speed() {
                   "for the DEM step, or n_dem too large for this speed; lower n_dem or the time "
                   "step",
                   fastest_tag, global.value, update->ntimestep, kMaxShiftPerFluidStep);
-    error->one(FLERR, text);
+    stop_on_this_rank(text);
   }
   MPI_Barrier(world);
   error->all(FLERR, "fix lbm/pore: a particle moves too fast for the lattice (see the message of the rank that found it)");
@@ -598,7 +615,7 @@ void FixLbmPore::check_fluid_state() {
                   "for the lattice (keep speeds below %.2f in lattice units: lower 'velocity' or "
                   "'pressure_loss', refine dx or lower n_dem) or tau too close to 0.5",
                   update->ntimestep, fluid_steps_, problem.describe().c_str(), kMaxLatticeSpeed);
-    error->one(FLERR, text);
+    stop_on_this_rank(text);
   }
   MPI_Barrier(world);
   error->all(FLERR, "fix lbm/pore: fluid became unstable (see the message of the rank that found it)");
@@ -718,7 +735,7 @@ void FixLbmPore::write_restart(FILE* fp) {
   try {
     lbm::write_checkpoint(*solver_, path);
   } catch (const lbm::InputError& e) {
-    error->one(FLERR, e.what());
+    stop_on_this_rank(e.what());
   }
   if (comm->me == 0) {
     const int size = static_cast<int>(path.size()) + 1 + 8 * kNumDiagnostics;
