@@ -49,7 +49,18 @@ constexpr double kSoundSpeed = 0.5773502691896258;
 // A particle may move at most this many cells per fluid step: the mapping uncovers at most
 // one layer of nodes per step, and the refill assumes so (DESIGN.md, stability guards).
 constexpr double kMaxShiftPerFluidStep = 0.5;
-constexpr int kLoadsPerAtom = 6;  // force, torque
+// Per atom: force (3), torque (3), velocity coefficient C (1) of the last fluid step, summed
+// over ghost images; then the atom's own velocity at that step (3), and the force and
+// velocity of the step before (3 + 3), from which C is estimated.
+constexpr int kSummedPerAtom = 7;
+constexpr int kCoefficient = 6;
+constexpr int kStepVelocity = 7;
+constexpr int kPreviousForce = 10;
+constexpr int kPreviousVelocity = 13;
+constexpr int kLoadsPerAtom = 16;
+// C is kept below this many particle masses per fluid step: enough to stabilise the stiff
+// near-contact mode (C dt / m up to ~4 measured), without freezing a particle's response.
+constexpr double kMaxCoefficientMasses = 4.0;
 // Deposited particles are "at zero or very low velocity, such that moving flocks are not
 // counted" (paper Sec. III): slower than this fraction of the inlet velocity. Flocks move with
 // the flow, at or above the inlet velocity; particles in a clog creep far slower.
@@ -85,7 +96,7 @@ FixLbmPore::FixLbmPore(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg, arg) 
   restart_peratom = 1;
   nevery = 1;
   comm_forward = 6;  // velocity, angular velocity
-  comm_reverse = kLoadsPerAtom;
+  comm_reverse = kSummedPerAtom;
   diagnostics_.assign(kNumDiagnostics, 0.0);
   grow_arrays(atom->nmax);
   atom->add_callback(0);  // grow/copy/exchange
@@ -384,13 +395,16 @@ void FixLbmPore::setup(int vflag) {
 // particles every substep.
 void FixLbmPore::post_force(int) {
   double** f = atom->f;
+  double** v = atom->v;
   double** torque = atom->torque;
   const int* mask = atom->mask;
   const int nlocal = atom->nlocal;
   const double* radius = atom->radius;
   for (int i = 0; i < nlocal; ++i) {
     if (!(mask[i] & groupbit)) continue;
-    for (int a = 0; a < 3; ++a) f[i][a] += loads_[i][a];
+    // F - C (v - v_step): the fluid resists a velocity change within the substeps at once.
+    const double C = loads_[i][kCoefficient];
+    for (int a = 0; a < 3; ++a) f[i][a] += loads_[i][a] - C * (v[i][a] - loads_[i][kStepVelocity + a]);
     if (torque)
       for (int a = 0; a < 3; ++a) torque[i][a] += loads_[i][3 + a];
     if (has_gravity_) {
@@ -516,20 +530,49 @@ void FixLbmPore::fluid_step() {
 // back to their owners (LIGGGHTS reverse communication, which also folds periodic images).
 void FixLbmPore::store_loads() {
   const int ntotal = atom->nlocal + atom->nghost;
+  for (int i = 0; i < atom->nlocal; ++i)
+    for (int a = 0; a < 3; ++a) {
+      loads_[i][kPreviousForce + a] = loads_[i][a];
+      loads_[i][kPreviousVelocity + a] = loads_[i][kStepVelocity + a];
+    }
   for (int i = 0; i < ntotal; ++i)
-    for (int k = 0; k < kLoadsPerAtom; ++k) loads_[i][k] = 0.0;
+    for (int k = 0; k < kPreviousForce; ++k) loads_[i][k] = 0.0;
   const auto& loads = coupling_->loads();
   if (loads.force.size() != particles_.size()) return;  // pure fluid step: no loads
   const double force_unit = units_->force_unit();
   const double torque_unit = units_->torque_to_physical(1.0);
+  // C converts lattice velocity to lattice force: force_unit * dt_lbm / dx per script velocity.
+  const double coefficient_unit = force_unit * units_->dt_lbm() / options_.dx;
   for (std::size_t p = 0; p < particles_.size(); ++p) {
     const int i = particles_.atom(p);
     for (int a = 0; a < 3; ++a) {
       loads_[i][a] = loads.force[p][a] * force_unit;
       loads_[i][3 + a] = loads.torque[p][a] * torque_unit;
     }
+    loads_[i][kCoefficient] = loads.velocity_coefficient[p] * coefficient_unit;
   }
   comm->reverse_comm_fix(this);
+  double** v = atom->v;
+  const double* rmass = atom->rmass;
+  for (int i = 0; i < atom->nlocal; ++i) {
+    double* load = loads_[i];
+    for (int a = 0; a < 3; ++a) load[kStepVelocity + a] = v[i][a];
+    // The force's response to the particle's velocity, measured between the last two steps
+    // (secant: -dF.dv / |dv|^2). Where a particle nearly touches another or a wall, the fluid
+    // in the gap makes it several times the moving-wall term of the links, and the explicit
+    // coupling then oscillates with period two fluid steps and grows (C dt / m > 2).
+    // Applied as F - C (v - v_step) within the substeps, a C close to the true one damps that
+    // mode at any strength; bounded below by the wall term and above by a few masses.
+    double dv2 = 0.0, dFdv = 0.0;
+    for (int a = 0; a < 3; ++a) {
+      const double dv = load[kStepVelocity + a] - load[kPreviousVelocity + a];
+      dv2 += dv * dv;
+      dFdv += (load[a] - load[kPreviousForce + a]) * dv;
+    }
+    const double c_max = rmass ? kMaxCoefficientMasses * rmass[i] / units_->dt_lbm() : load[kCoefficient];
+    const double secant = dv2 > 0.0 ? -dFdv / dv2 : 0.0;
+    load[kCoefficient] = std::clamp(secant, std::min(load[kCoefficient], c_max), c_max);
+  }
 }
 
 // After read_restart: the checkpoint holds the node types of the step it was written at,
@@ -817,14 +860,14 @@ void FixLbmPore::unpack_comm(int n, int first, double* buf) {
 int FixLbmPore::pack_reverse_comm(int n, int first, double* buf) {
   int m = 0;
   for (int i = first; i < first + n; ++i)
-    for (int k = 0; k < kLoadsPerAtom; ++k) buf[m++] = loads_[i][k];
+    for (int k = 0; k < kSummedPerAtom; ++k) buf[m++] = loads_[i][k];
   return m;
 }
 
 void FixLbmPore::unpack_reverse_comm(int n, int* list, double* buf) {
   int m = 0;
   for (int k = 0; k < n; ++k)
-    for (int q = 0; q < kLoadsPerAtom; ++q) loads_[list[k]][q] += buf[m++];
+    for (int q = 0; q < kSummedPerAtom; ++q) loads_[list[k]][q] += buf[m++];
 }
 
 const coupling::LatticeFrame& FixLbmPore::frame() const { return *frame_; }

@@ -30,6 +30,9 @@ void sum_links(const SphereLinks& sl, const lbm::FluidSolver& solver, Hydrodynam
     const int p = sl.particle[l];
     Vec3& force = loads.force[p];
     for (int a = 0; a < 3; ++a) force[a] += F[a];
+    // Isotropic part of 6 w_q rho0 c_q c_q: trace / 3 = 2 w_q rho0 |c_q|^2.
+    loads.velocity_coefficient[p] += 2.0 * L::w[q] * rho0 *
+                                     (L::c[q][0] * L::c[q][0] + L::c[q][1] * L::c[q][1] + L::c[q][2] * L::c[q][2]);
     const Vec3 t = cross(sl.arm[l], F);
     Vec3& torque = loads.torque[p];
     for (int a = 0; a < 3; ++a) torque[a] += t[a];

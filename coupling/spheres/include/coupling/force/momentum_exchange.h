@@ -22,9 +22,17 @@ enum class MomentumExchange {
 struct HydrodynamicLoads {
   std::vector<Vec3> force;   // indexed like the view of the step (owned and ghosts)
   std::vector<Vec3> torque;  // about the particle centre
+  // How strongly the force resists a change of the particle's velocity through the
+  // moving-wall term of its links: dF/dv = -C (isotropic part of sum 6 w_q rho0 c_q c_q).
+  // A host that keeps the force over several DEM substeps applies F - C (v - v_step) so the
+  // fluid resists velocity changes at once (Nguyen & Ladd 2002, implicit particle update):
+  // without it, the explicit coupling is unstable for particles in near contact, whose
+  // relative motion has half the mass (C dt / m_reduced > 2 with rho_p / rho_f = 2.3).
+  std::vector<double> velocity_coefficient;
   void reset(std::size_t n) {
     force.assign(n, Vec3{0.0, 0.0, 0.0});
     torque.assign(n, Vec3{0.0, 0.0, 0.0});
+    velocity_coefficient.assign(n, 0.0);
   }
 };
 
