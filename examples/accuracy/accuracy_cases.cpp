@@ -59,6 +59,19 @@ int check(const std::vector<accuracy::Row>& rows) {
   for (const auto& r : rows)
     if (must_converge(r)) series[r.case_name + " / " + r.option].push_back(&r);
   int failures = 0;
+  // The lubrication correction must make the sphere-wall force closer to Brenner's at
+  // every resolution.
+  for (const auto& with : rows) {
+    if (with.case_name != "lubrication" || with.option != "with correction") continue;
+    for (const auto& without : rows)
+      if (without.case_name == "lubrication" && without.option == "without correction" &&
+          without.resolution == with.resolution) {
+        const bool ok = with.error < without.error;
+        std::printf("CHECK lubrication d=%-4g          with correction %.4f < without %.4f: %s\n",
+                    with.resolution, with.error, without.error, ok ? "ok" : "NOT smaller");
+        if (!ok) ++failures;
+      }
+  }
   for (const auto& [name, list] : series) {
     bool ok = list.size() >= 2;
     std::ostringstream errors;
