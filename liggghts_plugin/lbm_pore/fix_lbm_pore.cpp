@@ -57,7 +57,10 @@ constexpr int kCoefficient = 6;
 constexpr int kStepVelocity = 7;
 constexpr int kPreviousForce = 10;
 constexpr int kPreviousVelocity = 13;
-constexpr int kLoadsPerAtom = 16;
+constexpr int kPreviousPosition = 16;  // position at the last fluid step (own atoms)
+constexpr int kHasPrevious = 19;       // 1 once kPreviousPosition holds a position
+constexpr int kWallVelocity = 20;      // velocity the fluid sees (owned and ghosts)
+constexpr int kLoadsPerAtom = 23;
 // C is kept below this many particle masses per fluid step: enough to stabilise the stiff
 // near-contact mode (C dt / m up to ~4 measured), without freezing a particle's response.
 constexpr double kMaxCoefficientMasses = 4.0;
@@ -383,7 +386,7 @@ void FixLbmPore::setup(int vflag) {
   run_fluid_steps_ = 0;
   time_fluid_ = time_lubrication_ = time_diagnostics_ = 0.0;
   if (resumed_) resume_mapping();
-  gather_particles();
+  gather_particles(false);
   update_particle_diagnostics();
   update_diagnostics();
   if (vtk_ && fluid_steps_ == 0) vtk_->write(*solver_, 0.0);
@@ -474,9 +477,31 @@ void FixLbmPore::end_of_step() {
   fluid_step();
 }
 
-// Lattice-unit copies of the group's owned atoms and ghosts, with current ghost velocities.
-void FixLbmPore::gather_particles() {
+// Lattice-unit copies of the group's owned atoms and ghosts. The fluid sees each sphere move
+// with its mean velocity over the last fluid step, (x - x_previous) / dt_lbm, the velocity
+// that matches how far the mapping moved it: the instantaneous velocity of a particle in a
+// stiff contact oscillates within the substeps, and sampling it once per fluid step feeds
+// that noise into the fluid. `advance` is false at setup, where no step has passed.
+void FixLbmPore::gather_particles(bool advance) {
+  double** x = atom->x;
+  double** v = atom->v;
+  const double dt_lbm = units_->dt_lbm();
+  for (int i = 0; i < atom->nlocal; ++i) {
+    double* load = loads_[i];
+    if (advance && load[kHasPrevious] > 0.0) {
+      double d[3] = {x[i][0] - load[kPreviousPosition], x[i][1] - load[kPreviousPosition + 1],
+                     x[i][2] - load[kPreviousPosition + 2]};
+      domain->minimum_image(d);  // an atom wrapped through a periodic face
+      for (int a = 0; a < 3; ++a) load[kWallVelocity + a] = d[a] / dt_lbm;
+    } else {
+      for (int a = 0; a < 3; ++a) load[kWallVelocity + a] = v[i][a];
+    }
+    for (int a = 0; a < 3; ++a) load[kPreviousPosition + a] = x[i][a];
+    load[kHasPrevious] = 1.0;
+  }
   comm->forward_comm_fix(this);
+  wall_velocity_rows_.resize(atom->nlocal + atom->nghost);
+  for (int i = 0; i < atom->nlocal + atom->nghost; ++i) wall_velocity_rows_[i] = loads_[i] + kWallVelocity;
   lbm_pore::AtomArrays atoms;
   atoms.nlocal = atom->nlocal;
   atoms.nghost = atom->nghost;
@@ -484,10 +509,10 @@ void FixLbmPore::gather_particles() {
   atoms.groupbit = groupbit;
   atoms.tag = atom->tag;
   atoms.x = atom->x;
-  atoms.v = atom->v;
+  atoms.v = wall_velocity_rows_.data();
   atoms.omega = atom->omega_flag ? atom->omega : nullptr;
   atoms.radius = atom->radius;
-  particles_.gather(atoms, *frame_, units_->dt_lbm());
+  particles_.gather(atoms, *frame_, dt_lbm);
   view_of_atom_.assign(atom->nlocal + atom->nghost, -1);
   for (std::size_t p = 0; p < particles_.size(); ++p) view_of_atom_[particles_.atom(p)] = int(p);
 }
@@ -502,7 +527,7 @@ long long FixLbmPore::global_particle_count() const {
 
 void FixLbmPore::fluid_step() {
   const double start = now();
-  gather_particles();
+  gather_particles(true);
   check_particle_speed();
   // Without particles (and none left to unmap) the step is the pure fluid step: a scene pays
   // only for what it uses.
@@ -589,7 +614,7 @@ void FixLbmPore::resume_mapping() {
     types[cell] = lbm::kFluid;
     for (int q = 0; q < lbm::D3Q19::Q; ++q) f.at(q, cell) = lbm::equilibrium(q, 1.0, {0.0, 0.0, 0.0});
   }
-  gather_particles();
+  gather_particles(false);
   coupling_->map_and_refill(particles_.view());
 }
 
@@ -801,6 +826,12 @@ void FixLbmPore::grow_arrays(int nmax) {
   nmax_ = nmax;
 }
 
+// A new atom (fix insert/...) starts with no load and no previous position: its slot may
+// hold a former ghost's values.
+void FixLbmPore::set_arrays(int i) {
+  for (int k = 0; k < kLoadsPerAtom; ++k) loads_[i][k] = 0.0;
+}
+
 void FixLbmPore::copy_arrays(int i, int j, int) {
   for (int k = 0; k < kLoadsPerAtom; ++k) loads_[j][k] = loads_[i][k];
 }
@@ -832,24 +863,23 @@ void FixLbmPore::unpack_restart(int nlocal, int nth) {
 int FixLbmPore::size_restart(int) { return kLoadsPerAtom + 1; }
 int FixLbmPore::maxsize_restart() { return kLoadsPerAtom + 1; }
 
+// Forward: the velocity the fluid sees and the angular velocity, owner -> ghosts.
 int FixLbmPore::pack_comm(int n, int* list, double* buf, int, int*) {
-  double** v = atom->v;
   double** omega = atom->omega;
   int m = 0;
   for (int k = 0; k < n; ++k) {
     const int i = list[k];
-    for (int a = 0; a < 3; ++a) buf[m++] = v[i][a];
+    for (int a = 0; a < 3; ++a) buf[m++] = loads_[i][kWallVelocity + a];
     for (int a = 0; a < 3; ++a) buf[m++] = omega ? omega[i][a] : 0.0;
   }
   return m;
 }
 
 void FixLbmPore::unpack_comm(int n, int first, double* buf) {
-  double** v = atom->v;
   double** omega = atom->omega;
   int m = 0;
   for (int i = first; i < first + n; ++i) {
-    for (int a = 0; a < 3; ++a) v[i][a] = buf[m++];
+    for (int a = 0; a < 3; ++a) loads_[i][kWallVelocity + a] = buf[m++];
     for (int a = 0; a < 3; ++a) {
       if (omega) omega[i][a] = buf[m];
       ++m;

@@ -50,6 +50,7 @@ class FixLbmPore : public Fix {
   // DEM substep until the next fluid step, so it travels with its atom.
   void grow_arrays(int nmax) override;
   void copy_arrays(int i, int j, int delflag) override;
+  void set_arrays(int i) override;
   int pack_exchange(int i, double* buf) override;
   int unpack_exchange(int nlocal, double* buf) override;
   int pack_restart(int i, double* buf) override;
@@ -93,7 +94,7 @@ class FixLbmPore : public Fix {
   void build_lattice();
   void find_gravity();
   void fluid_step();
-  void gather_particles();
+  void gather_particles(bool advance);
   void store_loads();
   void add_lubrication(double** f);
   void resume_mapping();
@@ -115,7 +116,8 @@ class FixLbmPore : public Fix {
   std::unique_ptr<coupling::LubricationCorrection> lubrication_;
   std::unique_ptr<lbm::VtkSeriesWriter> vtk_;
   lbm_pore::LatticeParticles particles_;
-  std::vector<int> view_of_atom_;  // atom index -> view entry, -1 outside the group
+  std::vector<int> view_of_atom_;
+  std::vector<double*> wall_velocity_rows_;  // rows of loads_ at the fluid-seen velocity  // atom index -> view entry, -1 outside the group
   class NeighList* list_ = nullptr;
   double** loads_ = nullptr;       // per atom: force (3), torque (3), script units
   int nmax_ = 0;
