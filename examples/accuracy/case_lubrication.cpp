@@ -95,7 +95,8 @@ void run_lubrication(const Options& options, std::vector<Row>& rows) {
       row.value = lambda_at(history, 0.01, corrected);
       row.reference_value = kBrenner[kPoints - 1];
       row.steps = static_cast<long>(history.size());
-      row.note = note;
+      // The option without the correction is the same lattice run: counted once in totals.
+      row.note = note + (corrected ? "" : ";shared_run=1");
       rows.push_back(row);
       std::fprintf(stderr, "lubrication %-18s d=%2d  rms error %.3f  lambda(0.01) %.2f (ref %.2f)  %ld steps  %.2f s\n",
                    row.option.c_str(), d, row.error, row.value, row.reference_value, row.steps,

@@ -73,8 +73,12 @@ def fmt_seconds(s):
 
 def markdown(rows):
     lines = []
-    total = sum(r["wall_seconds"] for r in rows)
-    lines.append(f"{len(rows)} runs, {total:.0f} s of wall-clock time in the cases.")
+    # Rows marked shared_run reuse another row's lattice run (lubrication without the
+    # correction): their time is not counted twice.
+    total = sum(r["wall_seconds"] for r in rows if r["notes"].get("shared_run") != "1")
+    lines.append(f"{len(rows)} rows, {total:.0f} s of wall-clock time in the cases (one core). "
+                 "Each cell: error (wall-clock time of that run); signed errors where the sign "
+                 "changes the reading (+ = too much drag).")
     lines.append("")
     grouped = series(rows)
     for case, options in grouped.items():
@@ -89,7 +93,12 @@ def markdown(rows):
             cells = []
             for k in keys:
                 r = by_key.get(k)
-                cells.append("" if r is None else f"{fmt_error(r['error'])} ({fmt_seconds(r['wall_seconds'])})")
+                if r is None:
+                    cells.append("")
+                    continue
+                signed = r["notes"].get("signed_error")
+                text = f"{100 * float(signed):+.2f} %" if signed is not None else fmt_error(r["error"])
+                cells.append(f"{text} ({fmt_seconds(r['wall_seconds'])})")
             lines.append(f"| {opt} | " + " | ".join(cells) + " |")
         lines.append("")
         if case == "moving":
