@@ -60,7 +60,8 @@ constexpr int kPreviousVelocity = 13;
 constexpr int kPreviousPosition = 16;  // position at the last fluid step (own atoms)
 constexpr int kHasPrevious = 19;       // 1 once kPreviousPosition holds a position
 constexpr int kWallVelocity = 20;      // velocity the fluid sees (owned and ghosts)
-constexpr int kLoadsPerAtom = 23;
+constexpr int kTag = 23;               // the atom the slot belongs to
+constexpr int kLoadsPerAtom = 24;
 // C is kept below this many particle masses per fluid step: enough to stabilise the stiff
 // near-contact mode (C dt / m up to ~4 measured), without freezing a particle's response.
 constexpr double kMaxCoefficientMasses = 4.0;
@@ -405,6 +406,7 @@ void FixLbmPore::post_force(int) {
   const double* radius = atom->radius;
   for (int i = 0; i < nlocal; ++i) {
     if (!(mask[i] & groupbit)) continue;
+    own_slot(i);
     // F - C (v - v_step): the fluid resists a velocity change within the substeps at once.
     const double C = loads_[i][kCoefficient];
     for (int a = 0; a < 3; ++a) f[i][a] += loads_[i][a] - C * (v[i][a] - loads_[i][kStepVelocity + a]);
@@ -487,6 +489,7 @@ void FixLbmPore::gather_particles(bool advance) {
   double** v = atom->v;
   const double dt_lbm = units_->dt_lbm();
   for (int i = 0; i < atom->nlocal; ++i) {
+    own_slot(i);
     double* load = loads_[i];
     if (advance && load[kHasPrevious] > 0.0) {
       double d[3] = {x[i][0] - load[kPreviousPosition], x[i][1] - load[kPreviousPosition + 1],
@@ -557,6 +560,7 @@ void FixLbmPore::store_loads() {
   const int ntotal = atom->nlocal + atom->nghost;
   for (int i = 0; i < atom->nlocal; ++i)
     for (int a = 0; a < 3; ++a) {
+      own_slot(i);
       loads_[i][kPreviousForce + a] = loads_[i][a];
       loads_[i][kPreviousVelocity + a] = loads_[i][kStepVelocity + a];
     }
@@ -827,9 +831,15 @@ void FixLbmPore::grow_arrays(int nmax) {
 }
 
 // A new atom (fix insert/...) starts with no load and no previous position: its slot may
-// hold a former ghost's values.
+// hold a former atom's values. Not every LIGGGHTS insertion calls set_arrays, so the slot
+// also records its atom's tag and own_slot() resets a slot whose tag differs.
 void FixLbmPore::set_arrays(int i) {
   for (int k = 0; k < kLoadsPerAtom; ++k) loads_[i][k] = 0.0;
+  loads_[i][kTag] = atom->tag[i];
+}
+
+void FixLbmPore::own_slot(int i) {
+  if (loads_[i][kTag] != double(atom->tag[i])) set_arrays(i);
 }
 
 void FixLbmPore::copy_arrays(int i, int j, int) {

@@ -51,6 +51,7 @@ class FixLbmPore : public Fix {
   void grow_arrays(int nmax) override;
   void copy_arrays(int i, int j, int delflag) override;
   void set_arrays(int i) override;
+  void own_slot(int i);  // resets the slot if it belonged to another atom
   int pack_exchange(int i, double* buf) override;
   int unpack_exchange(int nlocal, double* buf) override;
   int pack_restart(int i, double* buf) override;
