@@ -15,6 +15,7 @@
 #include "contact/voxel_surface.h"
 #include "coupling/lattice_frame.h"
 #include "coupling/lubrication/lubrication.h"
+#include "coupling/periodic_box.h"
 #include "coupling/sphere_coupling.h"
 #include "coupling/unit_conversion.h"
 #include "domain.h"
@@ -680,13 +681,32 @@ void FixLbmPore::check_fluid_state() {
   MPI_Allreduce(&local_bad, &any_bad, 1, MPI_INT, MPI_MAX, world);
   if (!any_bad) return;
   if (problem.found) {
-    char text[600];
+    // Name the particle whose surface is nearest to the node: most blow-ups start in the
+    // gap between a particle and a wall or another particle.
+    const auto view = particles_.view();
+    int nearest_id = -1;
+    double nearest_gap = 1e300;
+    const coupling::PeriodicBox box = coupling::PeriodicBox::from(solver_->decomposition());
+    const coupling::Vec3 node{double(problem.node[0]), double(problem.node[1]), double(problem.node[2])};
+    for (std::size_t p = 0; p < view.num_total; ++p) {
+      const auto d = box.displacement(view.x(p), node);
+      const double gap = std::sqrt(coupling::dot(d, d)) - view.r(p);
+      if (gap < nearest_gap) {
+        nearest_gap = gap;
+        nearest_id = view.identifier(p);
+      }
+    }
+    char near[200] = "";
+    if (nearest_id >= 0)
+      std::snprintf(near, sizeof near, "; nearest particle %d, its surface %.2f cells away",
+                    nearest_id, nearest_gap);
+    char text[800];
     std::snprintf(text, sizeof text,
                   "fix lbm/pore: fluid became unstable at DEM step " BIGINT_FORMAT
-                  " (fluid step %lld), %s. Likely cause: the drive or a particle is too fast "
+                  " (fluid step %lld), %s%s. Likely cause: the drive or a particle is too fast "
                   "for the lattice (keep speeds below %.2f in lattice units: lower 'velocity' or "
                   "'pressure_loss', refine dx or lower n_dem) or tau too close to 0.5",
-                  update->ntimestep, fluid_steps_, problem.describe().c_str(), kMaxLatticeSpeed);
+                  update->ntimestep, fluid_steps_, problem.describe().c_str(), near, kMaxLatticeSpeed);
     stop_on_this_rank(text);
   }
   MPI_Barrier(world);
