@@ -121,6 +121,7 @@ void PairLbmDashdot::init_style() {
 
   find_max_radius_per_type();
   check_time_step();
+  overlap_warned_ = false;  // the overlap warning comes once per run
 }
 
 void PairLbmDashdot::find_max_radius_per_type() {
@@ -137,9 +138,11 @@ void PairLbmDashdot::find_max_radius_per_type() {
   MPI_Allreduce(local.data(), max_radius_.data(), ntypes + 1, MPI_DOUBLE, MPI_MAX, world);
 }
 
+// The lightest pair of particles present has the shortest contact; refuse a step that
+// resolves it with fewer than kMinStepsPerContact steps (t_c of paper Eq. 1 with damping).
+// Called at init and whenever the global atom count changes (insertion), by every rank.
 void PairLbmDashdot::check_time_step() {
-  // The lightest pair of particles present has the shortest contact; refuse a step that
-  // resolves it with fewer than kMinStepsPerContact steps (t_c of paper Eq. 1 with damping).
+  checked_natoms_ = atom->natoms;
   double local_min_mass = 1e300;
   for (int i = 0; i < atom->nlocal; ++i) local_min_mass = std::min(local_min_mass, atom->rmass[i]);
   double min_mass = 0.0;
@@ -153,15 +156,81 @@ void PairLbmDashdot::check_time_step() {
       if (tc < worst_tc) { worst_tc = tc; worst = params_[i][j].normal; }
     }
   const double dt_max = worst_tc / kMinStepsPerContact;
+  dt_limit_ = dt_max;
   if (update->dt > dt_max) {
-    char message[512];
+    // With a fluid, the fluid step n_dem * dt sets tau: keep it, take more DEM steps per fluid step.
+    char fluid_advice[200] = "";
+    if (modify->find_fix_style("lbm/pore", 0))
+      std::snprintf(fluid_advice, sizeof fluid_advice,
+                    "; with fix lbm/pore, multiply n_dem by %d and divide the timestep by %d "
+                    "(the fluid step stays the same)",
+                    static_cast<int>(std::ceil(update->dt / dt_max)),
+                    static_cast<int>(std::ceil(update->dt / dt_max)));
+    char message[700];
     std::snprintf(message, sizeof message,
-                  "pair_style lbm/dashdot: timestep %g is too large for kn = %g: the contact "
-                  "time of the lightest particles (mass %g) is t_c = %g, and a contact needs "
-                  "at least %g steps; use timestep <= %g or a smaller kn",
-                  update->dt, worst.k_n, min_mass, worst_tc, kMinStepsPerContact, dt_max);
+                  "pair_style lbm/dashdot: timestep %g is too large for kn = %g at step " BIGINT_FORMAT
+                  ": the contact time of the lightest particles (mass %g) is t_c = %g, and a "
+                  "contact needs at least %g steps (timestep <= t_c/%g); use timestep <= %g or a "
+                  "smaller kn%s",
+                  update->dt, worst.k_n, update->ntimestep, min_mass, worst_tc,
+                  kMinStepsPerContact, kMinStepsPerContact, dt_max, fluid_advice);
     error->all(FLERR, message);
   }
+  // Expose the recommendation once, and again whenever lighter particles lower it.
+  if (comm->me == 0 && (reported_limit_ == 0.0 || dt_max < reported_limit_ * (1.0 - 1e-9))) {
+    char text[300];
+    std::snprintf(text, sizeof text,
+                  "pair_style lbm/dashdot: contact time t_c = %g of the lightest particles "
+                  "(mass %g, kn = %g); timestep limit t_c/%g = %g (timestep %g)\n",
+                  worst_tc, min_mass, worst.k_n, kMinStepsPerContact, dt_max, update->dt);
+    if (screen) std::fputs(text, screen);
+    if (logfile) std::fputs(text, logfile);
+  }
+  reported_limit_ = dt_max;
+}
+
+// Error::one aborts at once: its message would be lost in a buffered screen and it never
+// reaches the log file, so write both and flush first (ranks other than 0 have no screen).
+void PairLbmDashdot::stop_on_this_rank(const char* text) {
+  if (screen) {
+    std::fprintf(screen, "ERROR on proc %d: %s\n", comm->me, text);
+    std::fflush(screen);
+  } else {
+    std::fprintf(stderr, "ERROR on proc %d: %s\n", comm->me, text);
+    std::fflush(stderr);
+  }
+  if (logfile) {
+    std::fprintf(logfile, "ERROR on proc %d: %s\n", comm->me, text);
+    std::fflush(logfile);
+  }
+  error->one(FLERR, text);
+}
+
+// Overlap guard: a contact law resolves overlaps of a few percent of the radius; beyond that
+// kn is too soft for the forces of the scene, and at half the radius the particles pass
+// through each other.
+void PairLbmDashdot::check_overlap(double ratio, int i, int j) {
+  const int* tag = atom->tag;
+  char text[600];
+  if (ratio > kStopOverlap) {
+    std::snprintf(text, sizeof text,
+                  "pair_style lbm/dashdot: particles %d and %d overlap by %.0f %% of the smaller "
+                  "radius at step " BIGINT_FORMAT " (limit %.0f %%): they pass through each other. "
+                  "kn is far too soft for the forces in this scene, or the timestep too large: "
+                  "raise kn (the timestep limit t_c/10 shrinks with it), lower the drive",
+                  tag[i], tag[j], 100.0 * ratio, update->ntimestep, 100.0 * kStopOverlap);
+    stop_on_this_rank(text);
+  }
+  if (overlap_warned_) return;
+  overlap_warned_ = true;
+  std::snprintf(text, sizeof text,
+                "pair_style lbm/dashdot: particles %d and %d overlap by %.1f %% of the smaller "
+                "radius at step " BIGINT_FORMAT " (warning above %.0f %%, once per run): kn is too "
+                "soft for the forces in this scene; raise kn (the timestep limit t_c/10 shrinks "
+                "with it)",
+                tag[i], tag[j], 100.0 * ratio, update->ntimestep, 100.0 * kWarnOverlap);
+  if (screen) error->warning(FLERR, text);
+  else std::fprintf(stderr, "WARNING on proc %d: %s\n", comm->me, text);
 }
 
 double PairLbmDashdot::init_one(int i, int j) {
@@ -175,6 +244,11 @@ double PairLbmDashdot::init_one(int i, int j) {
 void PairLbmDashdot::compute(int eflag, int vflag) {
   if (eflag || vflag) ev_setup(eflag, vflag);
   else evflag = vflag_fdotr = 0;
+
+  // Particles inserted during the run (fix insert/..., fix pour) may be lighter than those
+  // checked at init. natoms is the same on every rank, so all ranks take this branch
+  // together; it costs one reduction per insertion, nothing on other steps.
+  if (atom->natoms != checked_natoms_) check_time_step();
 
   double** x = atom->x;
   double** v = atom->v;
@@ -190,9 +264,19 @@ void PairLbmDashdot::compute(int eflag, int vflag) {
   int** firstneigh = list->firstneigh;
 
   double bonds = 0.0;
+  double worst_overlap = 0.0;  // largest overlap / smaller radius, and its pair
+  int worst_i = -1, worst_j = -1;
   for (int ii = 0; ii < inum; ++ii) {
     const int i = ilist[ii];
     const double xi = x[i][0], yi = x[i][1], zi = x[i][2];
+    if (!std::isfinite(xi + yi + zi)) {
+      char text[300];
+      std::snprintf(text, sizeof text,
+                    "pair_style lbm/dashdot: particle %d has a non-finite position (%g %g %g) at "
+                    "step " BIGINT_FORMAT "; the run became unstable before this step",
+                    atom->tag[i], xi, yi, zi, update->ntimestep);
+      stop_on_this_rank(text);
+    }
     const double ri = radius[i];
     const int itype = type[i];
     const int* jlist = firstneigh[i];
@@ -217,6 +301,18 @@ void PairLbmDashdot::compute(int eflag, int vflag) {
       in.radius_j = rj;
       in.effective_mass = rmass[i] * rmass[j] / (rmass[i] + rmass[j]);
       const double fpair = contact::pair_normal_force(params, in) * inv_r;
+      if (in.gap < 0.0) {
+        const double ratio = -in.gap / std::min(ri, rj);
+        if (ratio > worst_overlap) { worst_overlap = ratio; worst_i = i; worst_j = j; }
+      }
+      if (!std::isfinite(fpair)) {
+        char text[300];
+        std::snprintf(text, sizeof text,
+                      "pair_style lbm/dashdot: non-finite contact force between particles %d and "
+                      "%d at step " BIGINT_FORMAT " (gap %g, gap rate %g); the run became unstable",
+                      atom->tag[i], atom->tag[j], update->ntimestep, in.gap, in.gap_rate);
+        stop_on_this_rank(text);
+      }
       const double fx = dx * fpair, fy = dy * fpair, fz = dz * fpair;
       f[i][0] += fx;
       f[i][1] += fy;
@@ -232,11 +328,15 @@ void PairLbmDashdot::compute(int eflag, int vflag) {
     }
   }
   bond_count_local_ = bonds;
+  max_overlap_ratio_ = worst_overlap;
+  if (worst_overlap > kWarnOverlap) check_overlap(worst_overlap, worst_i, worst_j);
   if (vflag_fdotr) virial_fdotr_compute();
 }
 
 void* PairLbmDashdot::extract(const char* name, int& dim) {
   dim = 0;
   if (std::strcmp(name, "bonds") == 0) return &bond_count_local_;
+  if (std::strcmp(name, "dt_max") == 0) return &dt_limit_;  // t_c / 10 (0: no particles yet)
+  if (std::strcmp(name, "max_overlap_ratio") == 0) return &max_overlap_ratio_;  // this rank, last step
   return nullptr;
 }

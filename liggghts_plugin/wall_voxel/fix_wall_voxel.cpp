@@ -3,11 +3,13 @@
 #include <mpi.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <string>
 
 #include "atom.h"
+#include "comm.h"
 #include "contact/dash_dot.h"
 #include "error.h"
 #include "modify.h"
@@ -97,9 +99,10 @@ FixWallVoxel::FixWallVoxel(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg, a
   }
 
   vector_flag = 1;
-  size_vector = 4;
+  size_vector = 6;
   global_freq = 1;
-  extvector = 1;
+  extvector = -1;  // contacts and forces extensive; the time step limit and overlap ratio not
+  extlist = new int[6]{1, 1, 1, 1, 0, 0};
 
   grow_arrays(atom->nmax);
   atom->add_callback(0);
@@ -135,7 +138,11 @@ void FixWallVoxel::parse_contact_keyword(int& iarg, int narg, char** arg) {
   iarg += 2;
 }
 
-FixWallVoxel::~FixWallVoxel() { atom->delete_callback(id, 0); }
+FixWallVoxel::~FixWallVoxel() {
+  atom->delete_callback(id, 0);
+  delete[] extlist;
+  extlist = nullptr;
+}
 
 int FixWallVoxel::setmask() { return FixConst::POST_FORCE; }
 
@@ -161,9 +168,12 @@ void FixWallVoxel::init() {
   if (!atom->radius_flag || !atom->rmass_flag)
     error->all(FLERR, "fix wall/voxel needs per-atom radius and mass (atom_style granular or sphere)");
   check_time_step();
+  overlap_warned_ = false;  // the overlap warning comes once per run
 }
 
+// Called at init and whenever the global atom count changes (insertion), by every rank.
 void FixWallVoxel::check_time_step() {
+  checked_natoms_ = atom->natoms;
   double local_min_mass = kBig;
   for (int i = 0; i < atom->nlocal; ++i)
     if (atom->mask[i] & groupbit) local_min_mass = std::min(local_min_mass, atom->rmass[i]);
@@ -175,15 +185,97 @@ void FixWallVoxel::check_time_step() {
   stiffest.k_n = std::max(params_.normal.k_n, params_.friction.k_t);
   const double tc = contact::contact_duration(stiffest, min_mass);
   const double dt_max = tc / kMinStepsPerContact;
+  const bool was_unset = dt_limit_ == 0.0;
+  const bool dropped = dt_max < dt_limit_ * (1.0 - 1e-9);
+  dt_limit_ = dt_max;
   if (update->dt > dt_max) {
-    char message[512];
+    // With a fluid, the fluid step n_dem * dt sets tau: keep it, take more DEM steps per fluid step.
+    const int factor = static_cast<int>(std::ceil(update->dt / dt_max));
+    char fluid_advice[200] = "";
+    if (modify->find_fix_style("lbm/pore", 0))
+      std::snprintf(fluid_advice, sizeof fluid_advice,
+                    "; with fix lbm/pore, multiply n_dem by %d and divide the timestep by %d "
+                    "(the fluid step stays the same)",
+                    factor, factor);
+    const bool kt_sets = params_.friction.k_t > params_.normal.k_n;
+    char message[700];
     std::snprintf(message, sizeof message,
-                  "fix wall/voxel: timestep %g is too large for kw = %g: the wall contact time "
-                  "of the lightest particle (mass %g) is t_c = %g, and a contact needs at least "
-                  "%g steps; use timestep <= %g or a smaller kw",
-                  update->dt, stiffest.k_n, min_mass, tc, kMinStepsPerContact, dt_max);
+                  "fix wall/voxel: timestep %g is too large for %s = %g at step " BIGINT_FORMAT
+                  ": the wall contact time of the lightest particle (mass %g) is t_c = %g, and "
+                  "a contact needs at least %g steps (timestep <= t_c/%g); use timestep <= %g or a "
+                  "smaller %s%s",
+                  update->dt, kt_sets ? "kt" : "kw", stiffest.k_n, update->ntimestep, min_mass, tc,
+                  kMinStepsPerContact, kMinStepsPerContact, dt_max, kt_sets ? "kt" : "kw",
+                  fluid_advice);
     error->all(FLERR, message);
   }
+  if (comm->me == 0 && (was_unset || dropped)) {
+    char text[300];
+    std::snprintf(text, sizeof text,
+                  "fix wall/voxel: wall contact time t_c = %g of the lightest particle (mass %g, "
+                  "%s = %g); timestep limit t_c/%g = %g (timestep %g)\n",
+                  tc, min_mass, params_.friction.k_t > params_.normal.k_n ? "kt" : "kw",
+                  stiffest.k_n, kMinStepsPerContact, dt_max, update->dt);
+    if (screen) std::fputs(text, screen);
+    if (logfile) std::fputs(text, logfile);
+  }
+}
+
+// Error::one aborts at once: its message would be lost in a buffered screen and it never
+// reaches the log file, so write both and flush first (ranks other than 0 have no screen).
+void FixWallVoxel::stop_on_this_rank(const char* text) {
+  if (screen) {
+    std::fprintf(screen, "ERROR on proc %d: %s\n", comm->me, text);
+    std::fflush(screen);
+  } else {
+    std::fprintf(stderr, "ERROR on proc %d: %s\n", comm->me, text);
+    std::fflush(stderr);
+  }
+  if (logfile) {
+    std::fprintf(logfile, "ERROR on proc %d: %s\n", comm->me, text);
+    std::fflush(logfile);
+  }
+  error->one(FLERR, text);
+}
+
+void FixWallVoxel::stop_on_non_finite(int i, const char* what) {
+  char text[400];
+  std::snprintf(text, sizeof text,
+                "fix wall/voxel: particle %d has a non-finite %s at step " BIGINT_FORMAT
+                " (position %g %g %g, force so far %g %g %g): the run is unstable; stopping before the "
+                "NaN spreads",
+                atom->tag[i], what, update->ntimestep, atom->x[i][0], atom->x[i][1], atom->x[i][2],
+                atom->f[i][0], atom->f[i][1], atom->f[i][2]);
+  stop_on_this_rank(text);
+}
+
+// Overlap guard: beyond a few percent of R kw is too soft for the forces of the scene; at
+// half the radius the particle is passing through the wall.
+void FixWallVoxel::check_overlap(double ratio, int i) {
+  const int tag = atom->tag[i];
+  double** x = atom->x;
+  char text[600];
+  if (ratio > kStopOverlap) {
+    std::snprintf(text, sizeof text,
+                  "fix wall/voxel: particle %d at (%g %g %g) overlaps the wall by %.0f %% of its "
+                  "radius at step " BIGINT_FORMAT " (limit %.0f %%): it passes through the wall. kw "
+                  "is far too soft for the forces in this scene, or the timestep too large: raise "
+                  "kw (the timestep limit t_c/10 shrinks with it), lower the drive",
+                  tag, x[i][0], x[i][1], x[i][2], 100.0 * ratio, update->ntimestep,
+                  100.0 * kStopOverlap);
+    stop_on_this_rank(text);
+  }
+  if (overlap_warned_) return;
+  overlap_warned_ = true;
+  std::snprintf(text, sizeof text,
+                "fix wall/voxel: particle %d at (%g %g %g) overlaps the wall by %.1f %% of its "
+                "radius at step " BIGINT_FORMAT " (warning above %.0f %%, once per run): kw is too "
+                "soft for the forces in this scene; raise kw (the timestep limit t_c/10 shrinks "
+                "with it)",
+                tag, x[i][0], x[i][1], x[i][2], 100.0 * ratio, update->ntimestep,
+                100.0 * kWarnOverlap);
+  if (screen) error->warning(FLERR, text);
+  else std::fprintf(stderr, "WARNING on proc %d: %s\n", comm->me, text);
 }
 
 void FixWallVoxel::setup(int vflag) { post_force(vflag); }
@@ -197,14 +289,23 @@ void FixWallVoxel::post_force(int /*vflag*/) {
   const int* mask = atom->mask;
   const int nlocal = atom->nlocal;
   const double dt = update->dt;
-  std::fill(local_stats_, local_stats_ + 4, 0.0);
+  std::fill(local_stats_, local_stats_ + 5, 0.0);
   stats_reduced_ = false;
+  // Particles inserted during the run may be lighter than those checked at init; natoms is
+  // the same on every rank, so all take this branch together (one reduction per insertion).
+  if (atom->natoms != checked_natoms_) check_time_step();
+  double worst_overlap = 0.0;
+  int worst_i = -1;
 
   constexpr int kStride = kMaxContacts * kHistoryPerContact;
   double fresh[kStride];
   for (int i = 0; i < nlocal; ++i) {
     double* history = &history_[static_cast<std::size_t>(i) * kStride];
     if (!(mask[i] & groupbit)) continue;
+    // A NaN centre would send the surface search out of bounds; a NaN force (from the pair,
+    // the fluid or a fix before this one) would make the position NaN at the next step.
+    if (!std::isfinite(x[i][0] + x[i][1] + x[i][2] + f[i][0] + f[i][1] + f[i][2]))
+      stop_on_non_finite(i, std::isfinite(x[i][0] + x[i][1] + x[i][2]) ? "force" : "position");
     const double reach = contact::wall_contact_reach(params_, radius[i]);
     const contact::Vec3 centre{x[i][0], x[i][1], x[i][2]};
     surface_->find(centre, reach, points_);
@@ -236,6 +337,10 @@ void FixWallVoxel::post_force(int /*vflag*/) {
       }
       const contact::WallContactResult result = contact::wall_contact_force(params_, in);
       total += result.force;
+      if (in.gap < 0.0 && -in.gap > worst_overlap * radius[i]) {
+        worst_overlap = -in.gap / radius[i];
+        worst_i = i;
+      }
       if (result.active) {
         local_stats_[0] += 1.0;
         if (stored < kMaxContacts) {
@@ -250,18 +355,23 @@ void FixWallVoxel::post_force(int /*vflag*/) {
     f[i][0] += total.x;
     f[i][1] += total.y;
     f[i][2] += total.z;
+    if (!std::isfinite(total.x + total.y + total.z)) stop_on_non_finite(i, "wall force");
     local_stats_[1] += total.x;
     local_stats_[2] += total.y;
     local_stats_[3] += total.z;
   }
+  local_stats_[4] = worst_overlap;
+  if (worst_overlap > kWarnOverlap) check_overlap(worst_overlap, worst_i);
 }
 
 double FixWallVoxel::compute_vector(int index) {
+  if (index == 4) return dt_limit_;
   if (!stats_reduced_) {
     MPI_Allreduce(local_stats_, global_stats_, 4, MPI_DOUBLE, MPI_SUM, world);
+    MPI_Allreduce(&local_stats_[4], &global_stats_[4], 1, MPI_DOUBLE, MPI_MAX, world);
     stats_reduced_ = true;
   }
-  return global_stats_[index];
+  return index == 5 ? global_stats_[4] : global_stats_[index];
 }
 
 void FixWallVoxel::grow_arrays(int nmax) {

@@ -7,7 +7,13 @@
 // kept per contact in per-atom history). The voxels are merged into faces, edges and corners
 // (contact::find_surface_points) so a flat voxel wall acts as a flat wall. Particles do not
 // rotate in the paper's model: the contact uses translational velocities and applies no
-// torque. Global vector: [1] active contacts, [2..4] total wall force on the group.
+// torque. Global vector: [1] active contacts, [2..4] total wall force on the group,
+// [5] timestep limit t_c/10 of the lightest particle, [6] largest overlap/R of the last step.
+//
+// Stability guards (doc/stability.md): the time step against the wall contact time of the
+// lightest particle, re-checked whenever the global atom count changes (insertion); the
+// largest overlap per step (warning above 5 % of R, stop above 50 %); NaN in a position or
+// force stops the run with the atom ID and the step.
 #include <memory>
 #include <vector>
 
@@ -15,6 +21,7 @@
 #include "contact/wall_contact.h"
 #include "fix.h"
 #include "lbm/voxel_geometry.h"
+#include "lmptype.h"
 
 namespace LAMMPS_NS {
 
@@ -41,11 +48,18 @@ class FixWallVoxel : public Fix {
   // Contacts remembered per atom (a box corner has 3; staircases of a voxelised curve a few).
   static constexpr int kMaxContacts = 6;
   static constexpr int kHistoryPerContact = 6;  // normal (3), tangential spring (3)
+  // Overlap/R above which the fix warns (once per run) and stops the run.
+  static constexpr double kWarnOverlap = 0.05;
+  static constexpr double kStopOverlap = 0.5;
 
  private:
   void parse_contact_keyword(int& iarg, int narg, char** arg);
   std::shared_ptr<const lbm::VoxelGeometry> geometry_of_lbm_fix(const char* fix_id);
+  // Collective: recomputes the limit from the lightest particle in the group; error->all above it.
   void check_time_step();
+  void check_overlap(double ratio, int i);
+  void stop_on_this_rank(const char* text);
+  void stop_on_non_finite(int i, const char* what);
 
   std::shared_ptr<const lbm::VoxelGeometry> geometry_;
   std::unique_ptr<contact::VoxelSurface> surface_;  // search structure over *geometry_
@@ -53,8 +67,11 @@ class FixWallVoxel : public Fix {
   bool kt_given_ = false, tangential_damping_given_ = false;
   std::vector<double> history_;  // [atom][kMaxContacts][kHistoryPerContact]
   std::vector<contact::SurfacePoint> points_;  // scratch, reused
-  double local_stats_[4] = {0, 0, 0, 0};
-  double global_stats_[4] = {0, 0, 0, 0};
+  double local_stats_[5] = {0, 0, 0, 0, 0};   // contacts, force (3), largest overlap/R
+  double global_stats_[5] = {0, 0, 0, 0, 0};
+  bigint checked_natoms_ = -1;   // atom->natoms at the last time step check
+  double dt_limit_ = 0.0;        // t_c / 10 of the lightest particle (0: none yet)
+  bool overlap_warned_ = false;  // once per run
   bool stats_reduced_ = false;
 };
 
