@@ -700,13 +700,24 @@ void FixLbmPore::check_fluid_state() {
     if (nearest_id >= 0)
       std::snprintf(near, sizeof near, "; nearest particle %d, its surface %.2f cells away",
                     nearest_id, nearest_gap);
-    char text[800];
+    char cause[400];
+    if (nearest_gap < 1.0)
+      std::snprintf(cause, sizeof cause,
+                    "the flow is squeezed through a gap of less than a cell next to a particle: "
+                    "with 'velocity' the inlet flux must pass however tightly the pore clogs. "
+                    "Lower 'velocity' (gap speeds scale with it), drive by 'pressure_loss' "
+                    "(bounded gap speeds), or refine dx");
+    else
+      std::snprintf(cause, sizeof cause,
+                    "the drive or a particle is too fast for the lattice (keep speeds below "
+                    "%.2f in lattice units: lower 'velocity' or 'pressure_loss', refine dx or "
+                    "lower n_dem) or tau too close to 0.5",
+                    kMaxLatticeSpeed);
+    char text[1200];
     std::snprintf(text, sizeof text,
                   "fix lbm/pore: fluid became unstable at DEM step " BIGINT_FORMAT
-                  " (fluid step %lld), %s%s. Likely cause: the drive or a particle is too fast "
-                  "for the lattice (keep speeds below %.2f in lattice units: lower 'velocity' or "
-                  "'pressure_loss', refine dx or lower n_dem) or tau too close to 0.5",
-                  update->ntimestep, fluid_steps_, problem.describe().c_str(), near, kMaxLatticeSpeed);
+                  " (fluid step %lld), %s%s. Likely cause: %s",
+                  update->ntimestep, fluid_steps_, problem.describe().c_str(), near, cause);
     stop_on_this_rank(text);
   }
   MPI_Barrier(world);
