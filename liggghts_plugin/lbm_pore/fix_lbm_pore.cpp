@@ -70,7 +70,7 @@ constexpr double kMaxCoefficientMasses = 4.0;
 // counted" (paper Sec. III): slower than this fraction of the inlet velocity. Flocks move with
 // the flow, at or above the inlet velocity; particles in a clog creep far slower.
 constexpr double kDepositSpeedFraction = 0.1;
-constexpr int kCheckEvery = 10;   // fluid steps between NaN/runaway scans of the lattice
+constexpr int kCheckEvery = 100;  // fluid steps between NaN/runaway scans of the lattice
 
 int cells(double length, double dx) { return static_cast<int>(std::lround(length / dx)); }
 
@@ -913,7 +913,7 @@ int FixLbmPore::pack_comm(int n, int* list, double* buf, int, int*) {
     for (int a = 0; a < 3; ++a) buf[m++] = loads_[i][kWallVelocity + a];
     for (int a = 0; a < 3; ++a) buf[m++] = omega ? omega[i][a] : 0.0;
   }
-  return m;
+  return comm_forward;  // LIGGGHTS's Comm expects the count per atom, not the total
 }
 
 void FixLbmPore::unpack_comm(int n, int first, double* buf) {
@@ -932,7 +932,7 @@ int FixLbmPore::pack_reverse_comm(int n, int first, double* buf) {
   int m = 0;
   for (int i = first; i < first + n; ++i)
     for (int k = 0; k < kSummedPerAtom; ++k) buf[m++] = loads_[i][k];
-  return m;
+  return kSummedPerAtom;  // per atom, as LIGGGHTS's Comm expects
 }
 
 void FixLbmPore::unpack_reverse_comm(int n, int* list, double* buf) {
