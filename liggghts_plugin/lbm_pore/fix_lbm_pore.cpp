@@ -89,7 +89,8 @@ FixLbmPore::FixLbmPore(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg, arg) 
     options_ = lbm_pore::parse_pore_options(words);
     build_geometry();
   } catch (const lbm::InputError& e) {
-    error->all(FLERR, (std::string("fix lbm/pore: ") + e.what()).c_str());
+    const std::string what = e.what();  // the parser's messages already name the command
+    error->all(FLERR, (what.rfind("fix lbm/pore", 0) == 0 ? what : "fix lbm/pore: " + what).c_str());
   }
   if (!atom->radius_flag)
     error->all(FLERR, "fix lbm/pore needs per-atom radii: use atom_style granular (or sphere)");
