@@ -15,6 +15,8 @@ cmake --build build -j"$(nproc)"
 python=/usr/bin/python3
 [ -x "$python" ] || python=python3
 ranks=$(( $(nproc) >= 2 ? 2 : 1 ))
+# One OpenMP thread per rank: the ranks already use the cores, and idle OpenMP threads spin.
+export OMP_NUM_THREADS=$(( $(nproc) / ranks ))
 mkdir -p example_output
 cd example_output
 start=$(date +%s)

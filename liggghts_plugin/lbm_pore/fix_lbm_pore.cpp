@@ -62,7 +62,10 @@ constexpr int kPreviousPosition = 16;  // position at the last fluid step (own a
 constexpr int kHasPrevious = 19;       // 1 once kPreviousPosition holds a position
 constexpr int kWallVelocity = 20;      // velocity the fluid sees (owned and ghosts)
 constexpr int kTag = 23;               // the atom the slot belongs to
-constexpr int kLoadsPerAtom = 24;
+constexpr int kWallNormal = 24;        // nearest wall at the last fluid step: unit normal (3),
+constexpr int kWallDistance = 27;      // centre-to-surface distance then,
+constexpr int kWallKnown = 28;         // 1 when a wall was within reach
+constexpr int kLoadsPerAtom = 29;
 // C is kept below this many particle masses per fluid step: enough to stabilise the stiff
 // near-contact mode (C dt / m up to ~4 measured), without freezing a particle's response.
 constexpr double kMaxCoefficientMasses = 4.0;
@@ -390,6 +393,7 @@ void FixLbmPore::setup(int vflag) {
   time_fluid_ = time_lubrication_ = time_diagnostics_ = 0.0;
   if (resumed_) resume_mapping();
   gather_particles(false);
+  find_walls();
   update_particle_diagnostics();
   update_diagnostics();
   if (vtk_ && fluid_steps_ == 0) vtk_->write(*solver_, 0.0);
@@ -459,20 +463,42 @@ void FixLbmPore::add_lubrication(double** f) {
         for (int a = 0; a < 3; ++a) f[j][a] -= F[a] * force_unit;
     }
   }
-  std::vector<contact::SurfacePoint> points;
+  // The nearest wall was found at the last fluid step; within a fluid step a particle moves
+  // less than half a cell, so the distance follows from its displacement along that normal.
   for (int i = 0; i < nlocal; ++i) {
     if (!(mask[i] & groupbit)) continue;
-    surface_->find({x[i][0], x[i][1], x[i][2]}, radius[i] + cutoff, points);
-    if (points.empty()) continue;
-    const auto nearest = std::min_element(points.begin(), points.end(),
-                                           [](const auto& a, const auto& b) { return a.distance < b.distance; });
+    const double* load = loads_[i];
+    if (load[kWallKnown] <= 0.0) continue;
+    double distance = load[kWallDistance];
+    for (int a = 0; a < 3; ++a) distance += load[kWallNormal + a] * (x[i][a] - load[kPreviousPosition + a]);
+    if (distance - radius[i] >= cutoff) continue;
     coupling::WallDistance wall;
-    wall.distance = std::max(nearest->distance, 0.0) / dx;
-    wall.normal = {nearest->normal[0], nearest->normal[1], nearest->normal[2]};
+    wall.distance = std::max(distance, 0.0) / dx;
+    wall.normal = {load[kWallNormal], load[kWallNormal + 1], load[kWallNormal + 2]};
     const coupling::Vec3 vi{v[i][0] * to_lattice_velocity, v[i][1] * to_lattice_velocity,
                             v[i][2] * to_lattice_velocity};
     const auto F = lubrication_->wall_force(radius[i] / dx, vi, wall);
     for (int a = 0; a < 3; ++a) f[i][a] += F[a] * force_unit;
+  }
+}
+
+// The nearest wall of every owned particle, within the lubrication reach plus the farthest a
+// particle may move in a fluid step; used by add_lubrication until the next fluid step.
+void FixLbmPore::find_walls() {
+  if (!options_.lubrication) return;
+  double** x = atom->x;
+  const double* radius = atom->radius;
+  const double reach = (options_.lubrication_cutoff + kMaxShiftPerFluidStep) * options_.dx;
+  for (int i = 0; i < atom->nlocal; ++i) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    double* load = loads_[i];
+    surface_->find({x[i][0], x[i][1], x[i][2]}, radius[i] + reach, wall_points_);
+    load[kWallKnown] = wall_points_.empty() ? 0.0 : 1.0;
+    if (wall_points_.empty()) continue;
+    const auto nearest = std::min_element(wall_points_.begin(), wall_points_.end(),
+                                           [](const auto& a, const auto& b) { return a.distance < b.distance; });
+    load[kWallDistance] = nearest->distance;
+    for (int a = 0; a < 3; ++a) load[kWallNormal + a] = nearest->normal[a];
   }
 }
 
@@ -533,6 +559,10 @@ long long FixLbmPore::global_particle_count() const {
 void FixLbmPore::fluid_step() {
   const double start = now();
   gather_particles(true);
+  const double walls_start = now();
+  find_walls();
+  const double walls_time = now() - walls_start;
+  time_lubrication_ += walls_time;
   check_particle_speed();
   // Without particles (and none left to unmap) the step is the pure fluid step: a scene pays
   // only for what it uses.
@@ -543,7 +573,7 @@ void FixLbmPore::fluid_step() {
   store_loads();
   ++fluid_steps_;
   ++run_fluid_steps_;
-  time_fluid_ += now() - start;
+  time_fluid_ += now() - start - walls_time;
   const double diagnostics_start = now();
   // A full scan of the lattice costs a sizeable part of a step: the NaN/runaway guard runs
   // every kCheckEvery fluid steps (a blow-up takes many steps to reach the particles), the

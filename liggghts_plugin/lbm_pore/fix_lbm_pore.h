@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "contact/voxel_surface.h"
 #include "coupling/diagnostics/pore_diagnostics.h"
 #include "fix.h"
 #include "lattice_particles.h"
@@ -25,9 +26,6 @@ struct LatticeFrame;
 class SphereCoupling;
 class LubricationCorrection;
 }  // namespace coupling
-namespace contact {
-class VoxelSurface;
-}
 
 namespace LAMMPS_NS {
 
@@ -98,6 +96,7 @@ class FixLbmPore : public Fix {
   void gather_particles(bool advance);
   void store_loads();
   void add_lubrication(double** f);
+  void find_walls();
   void resume_mapping();
   void update_particle_diagnostics();
   void update_diagnostics();
@@ -118,7 +117,8 @@ class FixLbmPore : public Fix {
   std::unique_ptr<lbm::VtkSeriesWriter> vtk_;
   lbm_pore::LatticeParticles particles_;
   std::vector<int> view_of_atom_;
-  std::vector<double*> wall_velocity_rows_;  // rows of loads_ at the fluid-seen velocity  // atom index -> view entry, -1 outside the group
+  std::vector<double*> wall_velocity_rows_;
+  std::vector<contact::SurfacePoint> wall_points_;  // scratch of find_walls()  // rows of loads_ at the fluid-seen velocity  // atom index -> view entry, -1 outside the group
   class NeighList* list_ = nullptr;
   double** loads_ = nullptr;       // per atom: force (3), torque (3), script units
   int nmax_ = 0;

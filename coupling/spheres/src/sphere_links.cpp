@@ -35,7 +35,9 @@ void build_sphere_links(const SphereMapping& mapping, const ParticleView& view,
       if (!layout.is_owned(xi, xj, xk)) continue;
       const std::size_t x = layout.cell(xi, xj, xk);
       if (node_type[x] != lbm::kFluid) continue;
-      const Vec3 d = mapping.box().displacement(centre, mapping.node_position(x));
+      // The node's global position from the wall cell's coordinates (no division).
+      const auto g = layout.to_global(xi, xj, xk);
+      const Vec3 d = mapping.box().displacement(centre, Vec3{double(g[0]), double(g[1]), double(g[2])});
       const double s = link_fraction(d, L::c[q], R);
       const Vec3 arm{d[0] + s * L::c[q][0], d[1] + s * L::c[q][1], d[2] + s * L::c[q][2]};
       lbm::BoundaryLink link;
