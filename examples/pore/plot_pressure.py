@@ -2,13 +2,14 @@
 """Plot the pressure loss across the pore against time from a LIGGGHTS log, marking the
 erosive bursts: sudden drops of the pressure loss (paper, Figs. 2-3).
 
-Usage: plot_pressure.py log.liggghts [--fix pore] [--out pressure_loss.png] [--drop 0.2] [--window 5]
+Usage: plot_pressure.py log.liggghts [--fix pore] [--out pressure_loss.png] [--drop 0.1] [--window 10]
 
 The log must contain a thermo block whose header has the columns `Step` and the fix's
 pressure loss, e.g. `thermo_style custom step f_pore[1] f_pore[6] ...` (LIGGGHTS prints the
 header as pore[1], pore[6]). With the deposited volume f_<ID>[6] in the block as well, it is
-drawn on a second axis (the paper relates the pressure peaks to V_dep). A burst is a fall of the pressure loss by more than `--drop` (fraction of the
-preceding peak) within `--window` thermo rows. Prints each burst as
+drawn on a second axis (the paper relates the pressure peaks to V_dep). A burst is a fall of
+the pressure loss by more than `--drop` (fraction of the preceding peak, default 10 %) within
+`--window` thermo rows (default 10: 1000 fluid steps in the example). Prints each burst as
 `BURST step peak after drop_fraction` and writes the plot.
 """
 import argparse
@@ -55,8 +56,10 @@ def main():
     parser.add_argument("--out", default="pressure_loss.png")
     parser.add_argument("--fix", default="pore", help="ID of the fix lbm/pore (default pore)")
     parser.add_argument("--column", default=None, help="thermo column of the pressure loss")
-    parser.add_argument("--drop", type=float, default=0.2)
-    parser.add_argument("--window", type=int, default=5)
+    parser.add_argument("--drop", type=float, default=0.1,
+                        help="fall, as a fraction of the preceding peak, that counts as a burst")
+    parser.add_argument("--window", type=int, default=10,
+                        help="thermo rows within which the fall must happen")
     args = parser.parse_args()
     header, rows = read_thermo(args.log)
     def find(index):
