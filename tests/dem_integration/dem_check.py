@@ -28,7 +28,7 @@ def run(driver, scripts, script, variables, ranks=1):
     if ranks > 1:
         cmd = ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", str(ranks)] + cmd
     out = subprocess.run(cmd, cwd=work, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                         text=True, timeout=120)
+                         text=True, errors="replace", timeout=120)
     if out.returncode != 0 or "ERROR" in out.stdout:
         print(out.stdout[-3000:])
         sys.exit("liggghts-lbm failed")

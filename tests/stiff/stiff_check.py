@@ -26,7 +26,7 @@ def run(args, script, variables, expect_error=False):
         cmd += ["-var", name, str(value)]
     print("run:", " ".join(cmd[1:]))
     out = subprocess.run(cmd, cwd=work, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                         text=True, timeout=300)
+                         text=True, errors="replace", timeout=300)
     failed = out.returncode != 0 or "ERROR" in out.stdout
     if failed and not expect_error:
         print(out.stdout[-3000:])

@@ -33,7 +33,7 @@ def liggghts(driver, variables, work):
     for name, value in {**SCENE, **variables}.items():
         cmd += ["-var", name, str(value)]
     out = subprocess.run(cmd, cwd=work, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                         text=True, env=ENV)
+                         text=True, errors="replace", env=ENV)
     if out.returncode != 0 or "ERROR" in out.stdout:
         print(out.stdout[-3000:])
         sys.exit("bench_features: liggghts-lbm failed")
