@@ -37,15 +37,24 @@ def read_thermo(path):
 
 
 def find_bursts(steps, pressure, drop, window):
-    """Indices (peak, after) where the pressure falls by more than `drop` of the peak."""
-    bursts, i = [], 0
-    while i < len(pressure):
+    """(peak, after) index pairs: a peak is the highest value since `window` rows before it and
+    until the pressure's lowest point within `window` rows after it, which lies more than
+    `drop` (fraction of the peak) below it."""
+    bursts, i, n = [], 0, len(pressure)
+    while i < n:
         peak = pressure[i]
-        j_end = min(len(pressure), i + window + 1)
-        fall = [j for j in range(i + 1, j_end) if peak > 0 and pressure[j] < (1 - drop) * peak]
-        if fall and all(pressure[i] >= pressure[k] for k in range(max(0, i - window), i)):
-            bursts.append((i, fall[-1]))
-            i = fall[-1]
+        if peak <= 0 or any(pressure[k] > peak for k in range(max(0, i - window), i)):
+            i += 1
+            continue
+        low = i
+        for j in range(i + 1, min(n, i + window + 1)):
+            if pressure[j] > peak:
+                break
+            if pressure[j] < pressure[low]:
+                low = j
+        if pressure[low] < (1 - drop) * peak:
+            bursts.append((i, low))
+            i = low
         i += 1
     return bursts
 
