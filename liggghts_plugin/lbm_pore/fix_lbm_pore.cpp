@@ -171,7 +171,6 @@ void FixLbmPore::init() {
   neighbor->requests[request]->fix = 1;
   neighbor->requests[request]->half = 0;
   neighbor->requests[request]->gran = 1;
-  find_gravity();
   print_setup();
 }
 
@@ -191,6 +190,15 @@ void FixLbmPore::find_gravity() {
     gravity->get_gravity(g);
     for (int a = 0; a < 3; ++a) gravity_[a] += g[a];
     has_gravity_ = true;
+  }
+  if (has_gravity_ && comm->me == 0) {
+    char text[300];
+    std::snprintf(text, sizeof text,
+                  "fix lbm/pore: fix gravity found: buoyancy -rho V g added to each particle, "
+                  "g = (%g, %g, %g)\n",
+                  gravity_[0], gravity_[1], gravity_[2]);
+    if (screen) std::fputs(text, screen);
+    if (logfile) std::fputs(text, logfile);
   }
 }
 
@@ -379,15 +387,16 @@ void FixLbmPore::print_setup() const {
                        "fix lbm/pore: pressure loss %g = %.4g lattice (density difference %.3g)\n",
                        options_.drive_value, drive.pressure_loss, 3.0 * drive.pressure_loss);
   n += std::snprintf(text + n, sizeof text - n,
-                     "fix lbm/pore: moving walls %s, lubrication %s (cutoff %g cells)%s\n",
+                     "fix lbm/pore: moving walls %s, lubrication %s (cutoff %g cells)\n",
                      options_.boundary.c_str(), options_.lubrication ? "on" : "off",
-                     options_.lubrication_cutoff,
-                     has_gravity_ ? ", buoyancy -rho_f V g added (fix gravity found)" : "");
+                     options_.lubrication_cutoff);
   if (screen) std::fputs(text, screen);
   if (logfile) std::fputs(text, logfile);
 }
 
 void FixLbmPore::setup(int vflag) {
+  // After every fix's init(): fix gravity sets its acceleration there.
+  find_gravity();
   run_start_ = now();
   run_fluid_steps_ = 0;
   time_fluid_ = time_lubrication_ = time_diagnostics_ = 0.0;
