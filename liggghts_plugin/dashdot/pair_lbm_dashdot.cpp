@@ -20,6 +20,7 @@
 #include "neigh_request.h"
 #include "neighbor.h"
 #include "plugin_common/parse_number.h"
+#include "plugin_common/stop_run.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;
@@ -189,23 +190,6 @@ void PairLbmDashdot::check_time_step() {
   reported_limit_ = dt_max;
 }
 
-// Error::one aborts at once: its message would be lost in a buffered screen and it never
-// reaches the log file, so write both and flush first (ranks other than 0 have no screen).
-void PairLbmDashdot::stop_on_this_rank(const char* text) {
-  if (screen) {
-    std::fprintf(screen, "ERROR on proc %d: %s\n", comm->me, text);
-    std::fflush(screen);
-  } else {
-    std::fprintf(stderr, "ERROR on proc %d: %s\n", comm->me, text);
-    std::fflush(stderr);
-  }
-  if (logfile) {
-    std::fprintf(logfile, "ERROR on proc %d: %s\n", comm->me, text);
-    std::fflush(logfile);
-  }
-  error->one(FLERR, text);
-}
-
 // Overlap guard: a contact law resolves overlaps of a few percent of the radius; beyond that
 // kn is too soft for the forces of the scene, and at half the radius the particles pass
 // through each other.
@@ -219,7 +203,7 @@ void PairLbmDashdot::check_overlap(double ratio, int i, int j) {
                   "kn is far too soft for the forces in this scene, or the timestep too large: "
                   "raise kn (the timestep limit t_c/10 shrinks with it), lower the drive",
                   tag[i], tag[j], 100.0 * ratio, update->ntimestep, 100.0 * kStopOverlap);
-    stop_on_this_rank(text);
+    lbm_pore::stop_on_this_rank(error, comm->me, screen, logfile, text);
   }
   if (overlap_warned_) return;
   overlap_warned_ = true;
@@ -275,7 +259,7 @@ void PairLbmDashdot::compute(int eflag, int vflag) {
                     "pair_style lbm/dashdot: particle %d has a non-finite position (%g %g %g) at "
                     "step " BIGINT_FORMAT "; the run became unstable before this step",
                     atom->tag[i], xi, yi, zi, update->ntimestep);
-      stop_on_this_rank(text);
+      lbm_pore::stop_on_this_rank(error, comm->me, screen, logfile, text);
     }
     const double ri = radius[i];
     const int itype = type[i];
@@ -311,7 +295,7 @@ void PairLbmDashdot::compute(int eflag, int vflag) {
                       "pair_style lbm/dashdot: non-finite contact force between particles %d and "
                       "%d at step " BIGINT_FORMAT " (gap %g, gap rate %g); the run became unstable",
                       atom->tag[i], atom->tag[j], update->ntimestep, in.gap, in.gap_rate);
-        stop_on_this_rank(text);
+        lbm_pore::stop_on_this_rank(error, comm->me, screen, logfile, text);
       }
       const double fx = dx * fpair, fy = dy * fpair, fz = dz * fpair;
       f[i][0] += fx;

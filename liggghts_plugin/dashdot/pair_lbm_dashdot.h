@@ -51,7 +51,6 @@ class PairLbmDashdot : public Pair {
   void check_time_step();
   // Per-step guards of compute(): overlap warning/stop and NaN, on the rank that found them.
   void check_overlap(double ratio, int i, int j);
-  void stop_on_this_rank(const char* text);
 
   contact::PairContactParams defaults_;
   std::vector<std::vector<contact::PairContactParams>> params_;  // [type][type], 1-based

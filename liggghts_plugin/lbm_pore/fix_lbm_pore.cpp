@@ -27,6 +27,7 @@
 #include "lbm/decomposition.h"
 #include "lbm/fluid_solver.h"
 #include "lbm/input_error.h"
+#include "plugin_common/stop_run.h"
 #include "lbm/macroscopic.h"
 #include "lbm/node_type.h"
 #include "lbm/pore_scene.h"
@@ -663,22 +664,6 @@ void FixLbmPore::resume_mapping() {
   coupling_->map_and_refill(particles_.view());
 }
 
-// Error::one aborts at once: its message would be lost in a buffered screen and it never
-// reaches the log file, so write both and flush first.
-void FixLbmPore::stop_on_this_rank(const char* text) {
-  if (screen) {
-    std::fprintf(screen, "ERROR on proc %d: %s\n", comm->me, text);
-    std::fflush(screen);
-  }
-  if (logfile) {
-    std::fprintf(logfile, "ERROR on proc %d: %s\n", comm->me, text);
-    std::fflush(logfile);
-  }
-  std::fprintf(stderr, "ERROR on proc %d: %s\n", comm->me, text);
-  error->one(FLERR, text);
-  std::abort();  // not reached: Error::one aborts MPI
-}
-
 // Guard: a particle may not cross more than kMaxShiftPerFluidStep cells per fluid step.
 void FixLbmPore::check_particle_speed() {
   const auto view = particles_.view();
@@ -708,7 +693,7 @@ void FixLbmPore::check_particle_speed() {
                   "for the DEM step, or n_dem too large for this speed; lower n_dem or the time "
                   "step",
                   fastest_tag, global.value, update->ntimestep, kMaxShiftPerFluidStep);
-    stop_on_this_rank(text);
+    lbm_pore::stop_on_this_rank(error, comm->me, screen, logfile, text);
   }
   MPI_Barrier(world);
   error->all(FLERR, "fix lbm/pore: a particle moves too fast for the lattice (see the message of the rank that found it)");
@@ -758,7 +743,7 @@ void FixLbmPore::check_fluid_state() {
                   "fix lbm/pore: fluid became unstable at DEM step " BIGINT_FORMAT
                   " (fluid step %lld), %s%s. Likely cause: %s",
                   update->ntimestep, fluid_steps_, problem.describe().c_str(), near, cause);
-    stop_on_this_rank(text);
+    lbm_pore::stop_on_this_rank(error, comm->me, screen, logfile, text);
   }
   MPI_Barrier(world);
   error->all(FLERR, "fix lbm/pore: fluid became unstable (see the message of the rank that found it)");
@@ -878,7 +863,7 @@ void FixLbmPore::write_restart(FILE* fp) {
   try {
     lbm::write_checkpoint(*solver_, path);
   } catch (const lbm::InputError& e) {
-    stop_on_this_rank(e.what());
+    lbm_pore::stop_on_this_rank(error, comm->me, screen, logfile, e.what());
   }
   if (comm->me == 0) {
     const int size = static_cast<int>(path.size()) + 1 + 8 * kNumDiagnostics;

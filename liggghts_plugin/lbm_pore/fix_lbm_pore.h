@@ -103,7 +103,6 @@ class FixLbmPore : public Fix {
   void print_setup() const;
   void check_fluid_state();
   void check_particle_speed();
-  [[noreturn]] void stop_on_this_rank(const char* text);
   long long global_particle_count() const;
 
   lbm_pore::PoreOptions options_;

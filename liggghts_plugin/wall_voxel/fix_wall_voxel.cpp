@@ -14,6 +14,7 @@
 #include "error.h"
 #include "modify.h"
 #include "lbm/input_error.h"
+#include "plugin_common/stop_run.h"
 #include "lbm_pore/fix_lbm_pore.h"
 #include "plugin_common/parse_number.h"
 #include "update.h"
@@ -221,23 +222,6 @@ void FixWallVoxel::check_time_step() {
   }
 }
 
-// Error::one aborts at once: its message would be lost in a buffered screen and it never
-// reaches the log file, so write both and flush first (ranks other than 0 have no screen).
-void FixWallVoxel::stop_on_this_rank(const char* text) {
-  if (screen) {
-    std::fprintf(screen, "ERROR on proc %d: %s\n", comm->me, text);
-    std::fflush(screen);
-  } else {
-    std::fprintf(stderr, "ERROR on proc %d: %s\n", comm->me, text);
-    std::fflush(stderr);
-  }
-  if (logfile) {
-    std::fprintf(logfile, "ERROR on proc %d: %s\n", comm->me, text);
-    std::fflush(logfile);
-  }
-  error->one(FLERR, text);
-}
-
 void FixWallVoxel::stop_on_non_finite(int i, const char* what) {
   char text[400];
   std::snprintf(text, sizeof text,
@@ -246,7 +230,7 @@ void FixWallVoxel::stop_on_non_finite(int i, const char* what) {
                 "NaN spreads",
                 atom->tag[i], what, update->ntimestep, atom->x[i][0], atom->x[i][1], atom->x[i][2],
                 atom->f[i][0], atom->f[i][1], atom->f[i][2]);
-  stop_on_this_rank(text);
+  lbm_pore::stop_on_this_rank(error, comm->me, screen, logfile, text);
 }
 
 // Overlap guard: beyond a few percent of R kw is too soft for the forces of the scene; at
@@ -263,7 +247,7 @@ void FixWallVoxel::check_overlap(double ratio, int i) {
                   "kw (the timestep limit t_c/10 shrinks with it), lower the drive",
                   tag, x[i][0], x[i][1], x[i][2], 100.0 * ratio, update->ntimestep,
                   100.0 * kStopOverlap);
-    stop_on_this_rank(text);
+    lbm_pore::stop_on_this_rank(error, comm->me, screen, logfile, text);
   }
   if (overlap_warned_) return;
   overlap_warned_ = true;

@@ -58,7 +58,6 @@ class FixWallVoxel : public Fix {
   // Collective: recomputes the limit from the lightest particle in the group; error->all above it.
   void check_time_step();
   void check_overlap(double ratio, int i);
-  void stop_on_this_rank(const char* text);
   void stop_on_non_finite(int i, const char* what);
 
   std::shared_ptr<const lbm::VoxelGeometry> geometry_;

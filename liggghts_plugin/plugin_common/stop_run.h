@@ -1,0 +1,17 @@
+#pragma once
+// Stopping a run from one rank (LIGGGHTS's Error::one) so the message is not lost: Error::one
+// aborts MPI at once, its text may sit in a buffered screen and never reaches the log file,
+// and ranks other than 0 have no screen. So write the text to screen (or stderr) and log,
+// flush both, then call Error::one.
+#include <cstdio>
+
+namespace LAMMPS_NS {
+class Error;
+}
+
+namespace lbm_pore {
+
+[[noreturn]] void stop_on_this_rank(LAMMPS_NS::Error* error, int rank, FILE* screen, FILE* logfile,
+                                    const char* text);
+
+}  // namespace lbm_pore
