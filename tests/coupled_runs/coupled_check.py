@@ -29,13 +29,13 @@ def run(cmd, cwd, timeout=240):
     return result.returncode, result.stdout + result.stderr
 
 
-def liggghts(args, script, variables, cwd, ranks=1, expect_ok=True):
+def liggghts(args, script, variables, cwd, ranks=1, expect_ok=True, timeout=240):
     cmd = [args.driver, "-in", os.path.join(args.scripts, script), "-var", "dir", args.scripts]
     for key, value in variables.items():
         cmd += ["-var", key, str(value)]
     if ranks > 1:
         cmd = [args.mpirun, "-np", str(ranks), "--oversubscribe"] + cmd
-    code, out = run(cmd, cwd)
+    code, out = run(cmd, cwd, timeout)
     if expect_ok and (code != 0 or "ERROR" in out):
         print(out[-3000:])
         sys.exit(f"FAIL {script} {variables}: liggghts-lbm failed (exit {code})")
@@ -68,55 +68,91 @@ def relative(a, b):
 
 
 def case_adhesion(args, work):
-    """A particle pressed on the pore's floor by its net weight is held by wall friction and
-    adhesion at a low inlet velocity and torn off at a high one; the threshold predicted from
-    the held particle's drag (Stokes: linear in velocity) and Coulomb's mu N lies between."""
-    u_low, u_high, steps = 5e-5, 4e-4, 60000
-    rows_low = thermo(liggghts(args, "in.adhesion", {"u": u_low, "steps": steps}, work)[1])
-    rows_high = thermo(liggghts(args, "in.adhesion", {"u": u_high, "steps": steps}, work)[1])
-    # Displacement along the flow after the particle settled (step 20000 on).
-    held = abs(at(rows_low, steps)["px"] - at(rows_low, 20000)["px"])
-    torn = at(rows_high, steps)["px"] - at(rows_high, 20000)["px"]
-    check("adhesion_held_displacement_cells", f"{held:.4g}", held < 0.05, "< 0.05 at u = 5e-5")
-    check("adhesion_torn_off_displacement_cells", f"{torn:.4g}", torn > 0.1, "> 0.1 at u = 4e-4")
-    drag = sum(r["fx"] for r in rows_low if 30000 <= r["Step"] <= 50000) / \
-        sum(1 for r in rows_low if 30000 <= r["Step"] <= 50000)
-    volume = 4.0 / 3.0 * math.pi * 3.5 ** 3
-    normal = (2.3 - 1.0) * volume * 1e-4  # net weight (rho_p - rho) V g
-    threshold = 0.5 * normal / (drag / u_low)  # mu N / (drag per inlet velocity)
-    print(f"INFO held drag {drag:.4g}, drag per inlet velocity {drag / u_low:.4g}, "
-          f"mu N = {0.5 * normal:.4g}, predicted threshold u* = {threshold:.4g}")
-    check("adhesion_threshold_above_held_velocity", f"{threshold / u_low:.3g}",
-          threshold / u_low > 1.2, "u*/u_low > 1.2")
-    check("adhesion_threshold_below_tear_off_velocity", f"{u_high / threshold:.3g}",
-          u_high / threshold > 1.2, "u_high/u* > 1.2")
+    """A particle resting on the pore's flat floor, pressed by its net weight N = (rho_p - rho)
+    V g, is held by wall friction at a low inlet velocity and torn off at a high one. In the
+    Stokes regime its drag is linear in the inlet velocity, so the drag measured on the held
+    particle predicts the tear-off velocity u* = mu N / (drag / u). Runs at u* / 1.5 (must
+    hold) and 1.5 u* (must slide) check that prediction within a factor 1.5. The wall's
+    adhesion, at most 0.03 ka R^2, acts only across a gap (zero in contact): had it added to
+    N, u* would be (1 + 0.03 ka R^2 / N) = 16.7 times higher and the 1.5 u* run would hold."""
+    radius, rho_p, g, mu, kw, ka, steps = 3.5, 2.3, 1e-4, 0.5, 100.0, 1.0, 100000
+    normal = (rho_p - 1.0) * 4.0 / 3.0 * math.pi * radius ** 3 * g
+    # Start in contact with the floor (z = 3) at the overlap that carries N: no settling phase.
+    z0 = 3.0 + radius - normal / kw
+
+    def displacement(u):
+        rows = thermo(liggghts(args, "in.adhesion", {"u": u, "steps": steps, "z0": f"{z0:.10g}"},
+                               work)[1])
+        return rows, at(rows, steps)["px"] - at(rows, 0)["px"]
+
+    u_low, u_high = 3e-5, 2e-3
+    rows_low, held = displacement(u_low)
+    _, torn = displacement(u_high)
+    check("adhesion_held_displacement_cells", f"{held:.3g}", abs(held) < 0.05,
+          f"|dx| < 0.05 over {steps} steps at u = {u_low:g} (the friction spring's stretch is ~3e-4)")
+    check("adhesion_torn_off_displacement_cells", f"{torn:.3g}", torn > 3.0,
+          f"> 3 over {steps} steps at u = {u_high:g}")
+    # Drag of the held particle once the flow is steady (second half of the run).
+    late = [r["fx"] for r in rows_low if r["Step"] >= steps // 2]
+    drag = sum(late) / len(late)
+    threshold = mu * normal / (drag / u_low)
+    print(f"INFO held drag {drag:.4g} at u = {u_low:g} ({drag / u_low:.4g} per inlet velocity), "
+          f"N = {normal:.4g}, mu N = {mu * normal:.4g}, adhesion limit 0.03 ka R^2 = "
+          f"{0.03 * ka * radius ** 2:.4g} (not in contact), predicted tear-off u* = {threshold:.4g}")
+    check("adhesion_predicted_threshold_between_runs", f"{threshold:.3g}",
+          2.0 * u_low < threshold < u_high / 2.0,
+          f"between 2 u_low = {2 * u_low:g} and u_high / 2 = {u_high / 2:g}")
+    _, below = displacement(threshold / 1.5)
+    _, above = displacement(threshold * 1.5)
+    check("adhesion_held_at_threshold_over_1.5", f"{below:.3g}", abs(below) < 0.05,
+          f"|dx| < 0.05 cells at u = u*/1.5 = {threshold / 1.5:.4g}")
+    check("adhesion_slides_at_threshold_times_1.5", f"{above:.3g}", above > 0.05,
+          f"dx > 0.05 cells at u = 1.5 u* = {threshold * 1.5:.4g}")
 
 
 def case_clog(args, work):
-    """Four particles jam in the mouth of a pore narrower than two diameters: the pressure
-    loss must rise well above its particle-free value."""
+    """Four particles with strong adhesion and cohesion (ka = kc = 2) jam in the mouth of a
+    pore narrower than two diameters: the pressure loss must rise well above its
+    particle-free value and the fix must count them as deposited."""
     out = liggghts(args, "in.clog", {"clean_steps": 100000, "steps": 150000,
                                      "restart_read": "", "restart_write": ""}, work)[1]
     clean = float(next(l.split()[1] for l in out.splitlines() if l.startswith("CLEAN_PRESSURE")))
-    final = thermo(out)[-1]["p"]
+    last = thermo(out)[-1]
+    final = last["p"]
     check("clog_pressure_rise", f"{final / clean:.3g}", final / clean > 2.0,
           f"pressure loss {final:.4g} vs particle-free {clean:.4g}: ratio > 2")
+    check("clog_deposited_count", f"{last['pore[7]']:.0f}", last["pore[7]"] > 0,
+          "> 0 particles deposited (in the pore's cylinder, bonded, slower than 10 % of u)")
 
 
 def case_parallel(args, work):
-    """Two particles cross the middle of the lattice, where 2 ranks split the fluid and the
-    particles: pressure loss, hydrodynamic force and positions equal the serial run."""
+    """Two particles head for the middle of the lattice, where 2 ranks split the fluid and the
+    particles (processors 2 1 1, ranks meet at x = 15); particle 1 crosses it. Pressure loss,
+    hydrodynamic force and positions must equal the serial run: to round-off while no sphere
+    centre has passed the last node plane before the rank boundary (x = 14.5), and within a
+    looser bound after it. There a node the sphere uncovers next to the boundary is refilled
+    with the mean density of its fluid neighbours, which on a rank boundary includes halo nodes
+    that hold the last exchange's (one step old) values, so the refill differs from the
+    serial one by a step's density change; contacts amplify it further."""
     variables = {"steps": 200000}
     serial = thermo(liggghts(args, "in.transit", dict(variables, px=1), work)[1])
     split = thermo(liggghts(args, "in.transit", dict(variables, px=2), work, ranks=2)[1])
     crossed = any(r["x1"] > 15.0 for r in serial)
     check("parallel_particle_crossed_the_rank_boundary", crossed, crossed, "x1 > 15 at some step")
-    for column, bound in (("p", 1e-5), ("x1", 1e-5), ("y2", 1e-5), ("fx", 1e-3)):
+    check("parallel_same_rows", f"{len(split)} vs {len(serial)}", len(split) == len(serial) > 10,
+          "same number of thermo rows (> 10)")
+    before = [i for i, r in enumerate(serial) if max(r["x1"], r["x2"]) < 14.5]
+    for column in ("p", "fx", "x1", "y2"):
         # Relative to the column's largest magnitude: the force passes through zero.
+        scale = max(abs(r[column]) for r in serial)
+        early = max(abs(serial[i][column] - split[i][column]) for i in before) / scale
+        check(f"parallel_max_difference_{column}_before_boundary", f"{early:.3g}", early < 1e-10,
+              f"< 1e-10 of its largest value over the {len(before)} rows with both centres at x < 14.5")
+    for column, bound in (("p", 1e-5), ("x1", 1e-5), ("y2", 1e-5), ("fx", 1e-3)):
         scale = max(abs(r[column]) for r in serial)
         worst = max(abs(a[column] - b[column]) for a, b in zip(serial, split)) / scale
         check(f"parallel_max_difference_{column}", f"{worst:.3g}", worst < bound,
-              f"< {bound:g} of its largest value (1 vs 2 ranks; contacts amplify round-off)")
+              f"< {bound:g} of its largest value over the whole run (refills at the rank boundary)")
 
 
 def case_restart(args, work):
@@ -127,45 +163,63 @@ def case_restart(args, work):
     second = thermo(liggghts(args, "in.restart_b", {"restart_file": "clog.restart", "steps": 20000}, work)[1])
     a, b = whole[-1], second[-1]
     check("restart_same_final_step", b["Step"], a["Step"] == b["Step"], f"== {a['Step']:.0f}")
+    check("restart_same_deposited_count", f"{b['pore[7]']:.0f}", a["pore[7]"] == b["pore[7]"],
+          f"== {a['pore[7]']:.0f} (uninterrupted run)")
+    # Not bit-identical: the wall's tangential friction springs restart from zero (documented).
     for column, bound in (("p", 1e-6), ("x1", 1e-6), ("z5", 1e-6), ("pore[14]", 1e-3)):
         diff = relative(a[column], b[column])
         check(f"restart_relative_difference_{column}", f"{diff:.3g}", diff < bound, f"< {bound:g}")
 
 
 BAD = "scene pore inlet 6 free 4 length 14 outlet 6 width 20 diameter 15"
-BAD_CASES = [  # (fix line, second line, boundary, words the error must contain)
-    (f"fix f all lbm/pore {BAD} velocity 0.001", "", "p", ["'dx'", "> 0", "required"]),
-    (f"fix f all lbm/pore dx 1 nu -1 {BAD} velocity 0.001", "", "p", ["'nu'", "(0, inf]"]),
-    (f"fix f all lbm/pore dx 1 n_dem 0 {BAD} velocity 0.001", "", "p", ["'n_dem'", "[1, 100000]"]),
-    (f"fix f all lbm/pore dx 1 colour red {BAD} velocity 0.001", "", "p", ["'colour'", "valid keywords"]),
+BAD_CASES = [  # (fix line, second line, boundary "x yz", words the error must contain)
+    (f"fix f all lbm/pore {BAD} velocity 0.001", "", "f p", ["'dx'", "> 0", "required"]),
+    (f"fix f all lbm/pore dx 1 nu -1 {BAD} velocity 0.001", "", "f p", ["'nu'", "(0, inf]"]),
+    (f"fix f all lbm/pore dx 1 n_dem 0 {BAD} velocity 0.001", "", "f p", ["'n_dem'", "[1, 100000]"]),
+    (f"fix f all lbm/pore dx 1 magic 0 {BAD} velocity 0.001", "", "f p", ["'magic'", "(0, 10]"]),
+    (f"fix f all lbm/pore dx 1 lubrication_cutoff 5 {BAD} velocity 0.001", "", "f p",
+     ["'lubrication_cutoff'", "(0, 2]"]),
+    (f"fix f all lbm/pore dx 1 colour red {BAD} velocity 0.001", "", "f p", ["'colour'", "valid keywords"]),
+    (f"fix f all lbm/pore dx 1 {BAD}", "", "f p", ["drive", "'velocity", "'pressure_loss"]),
     ("fix f all lbm/pore dx 1 scene pore inlet 6 free 4 length 14 outlet 6 width 20 diameter 25 "
-     "velocity 0.001", "", "p", ["diameter", "width"]),
-    (f"fix f all lbm/pore dx 1 {BAD} velocity 1.0", "", "p", ["velocity", "0.30"]),
-    (f"fix f all lbm/pore dx 1 {BAD} pressure_loss 5", "", "p", ["pressure_loss", "0.1"]),
+     "velocity 0.001", "", "f p", ["diameter", "width"]),
+    # 1.0 with dt 0.01, n_dem 100 (the default), dx 1 is 1 cell per fluid step.
+    (f"fix f all lbm/pore dx 1 {BAD} velocity 1.0", "", "f p", ["velocity", "0.30"]),
+    (f"fix f all lbm/pore dx 1 {BAD} pressure_loss 5", "", "f p", ["pressure_loss", "0.1"]),
     ("fix f all lbm/pore dx 1 scene pore inlet 6 free 4 length 14 outlet 16 width 20 diameter 15 "
-     "velocity 0.001", "", "p", ["scene", "simulation box"]),
-    (f"fix f all lbm/pore dx 1 {BAD} velocity 0.001 lateral wall", "", "p", ["lateral", "boundary"]),
-    (f"fix f all lbm/pore dx 1 {BAD} velocity 0.001 boundary fancy", "", "p", ["'boundary'", "mls"]),
-    ("fix f all lbm/pore dx 1 scene voxels /nonexistent.raw velocity 0.001", "", "p",
+     "velocity 0.001", "", "f p", ["scene", "simulation box"]),
+    (f"fix f all lbm/pore dx 1 {BAD} velocity 0.001 lateral wall", "", "f p", ["lateral", "boundary"]),
+    (f"fix f all lbm/pore dx 1 {BAD} velocity 0.001 lateral periodic", "", "f f",
+     ["lateral", "periodic", "boundary"]),
+    (f"fix f all lbm/pore dx 1 {BAD} velocity 0.001", "", "p p", ["flow axis x", "periodic"]),
+    (f"fix f all lbm/pore dx 1 {BAD} velocity 0.001 boundary fancy", "", "f p", ["'boundary'", "mls"]),
+    ("fix f all lbm/pore dx 1 scene voxels /nonexistent.raw velocity 0.001", "", "f p",
      ["/nonexistent.raw", "cannot be opened"]),
-    (f"fix f all lbm/pore dx 1 {BAD} velocity 0.001", "fix w all wall/voxel lbm nothere", "p",
+    (f"fix f all lbm/pore dx 1 {BAD} velocity 0.001", "fix w all wall/voxel lbm nothere", "f p",
      ["wall/voxel", "'nothere'"]),
+    (f"fix f all lbm/pore dx 1 {BAD} velocity 0.001", "fix w all wall/voxel lbm f mu -1", "f p",
+     ["wall/voxel", "mu", ">= 0"]),
 ]
 
 
 def case_bad_arguments(args, work):
-    """Every bad input stops with a LIGGGHTS ERROR naming the keyword (and the range), quickly,
-    without a crash or a NaN."""
+    """Every bad input stops within 20 s with a LIGGGHTS ERROR naming the keyword (and the
+    range), a non-zero exit, no crash (signal) and no NaN anywhere in the output."""
     for line, line2, boundary, words in BAD_CASES:
+        bx, bnd = boundary.split()
+        name = f"bad_arguments[{line2 or line} | boundary {bx} {bnd} {bnd}]"
         try:
-            code, out = liggghts(args, "in.bad", {"fixline": line, "fixline2": line2, "bnd": boundary},
-                                 work, expect_ok=False)
+            code, out = liggghts(args, "in.bad", {"fixline": line, "fixline2": line2, "bx": bx, "bnd": bnd},
+                                 work, expect_ok=False, timeout=20)
         except subprocess.TimeoutExpired:
-            check(f"bad_arguments[{line}]", "timeout", False, "an error within the timeout")
+            check(name, "timeout", False, "an error within 20 s")
             continue
         error = next((l for l in out.splitlines() if l.startswith("ERROR")), "")
-        ok = code != 0 and error and all(w in error for w in words) and "nan" not in error.lower()
-        check(f"bad_arguments[{line2 or line}]", repr(error[:160]), ok, f"ERROR naming {words}")
+        crashed = code < 0 or "Segmentation fault" in out or "signal" in out.lower()
+        has_nan = re.search(r"\bnan\b", out, re.IGNORECASE) is not None
+        ok = code != 0 and not crashed and not has_nan and error and all(w in error for w in words)
+        check(name, f"exit {code}, {error[:170]!r}", ok,
+              f"ERROR naming {words}, exit != 0, no crash, no NaN")
 
 
 def main():
