@@ -32,7 +32,8 @@ def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--driver", required=True)
     parser.add_argument("--script", required=True)
-    parser.add_argument("--warmup", type=int, default=50000, help="DEM steps without particles")
+    parser.add_argument("--warmup", type=int, default=200000,
+                        help="DEM steps without particles (2000 fluid steps: a stable pure-fluid figure)")
     parser.add_argument("--steps", type=int, default=1500000, help="DEM steps with particles")
     args = parser.parse_args()
     args.driver, args.script = os.path.abspath(args.driver), os.path.abspath(args.script)
