@@ -125,10 +125,14 @@ PoreOptions parse_pore_options(const std::vector<std::string>& args) {
         fail("keyword 'lateral' = '" + v + "': must be 'periodic' or 'wall'");
       o.lateral_periodic = v == "periodic";
     } else if (key == "velocity") {
+      if (drive_given && o.drive != PoreOptions::Drive::kVelocity)
+        fail("keywords 'velocity' and 'pressure_loss' exclude each other: give one drive");
       o.drive = PoreOptions::Drive::kVelocity;
       o.drive_value = words.number(key, -kInf, kInf);
       drive_given = true;
     } else if (key == "pressure_loss") {
+      if (drive_given && o.drive != PoreOptions::Drive::kPressureLoss)
+        fail("keywords 'velocity' and 'pressure_loss' exclude each other: give one drive");
       o.drive = PoreOptions::Drive::kPressureLoss;
       o.drive_value = words.number(key, -kInf, kInf);
       drive_given = true;

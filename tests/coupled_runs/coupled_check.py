@@ -128,13 +128,10 @@ def case_clog(args, work):
 def case_parallel(args, work):
     """Two particles head for the middle of the lattice, where 2 ranks split the fluid and the
     particles (processors 2 1 1, ranks meet at x = 15); particle 1 crosses it. Pressure loss,
-    hydrodynamic force and positions must equal the serial run: to round-off while no sphere
-    centre has passed the last node plane before the rank boundary (x = 14.5), and within a
-    looser bound after it. There a node the sphere uncovers next to the boundary is refilled
-    with the mean density of its fluid neighbours, which on a rank boundary includes halo nodes
-    that hold the last exchange's (one step old) values, so the refill differs from the
-    serial one by a step's density change; contacts amplify it further. (With the halo
-    exchanged before the refill the whole run agrees to 2e-12: then tighten the bounds below.)"""
+    hydrodynamic force and positions must equal the serial run to round-off, before and after a
+    sphere crosses the rank boundary. (Before the halo was exchanged ahead of the refill, a
+    node uncovered next to the boundary was refilled from one-step-old halo densities and the
+    runs drifted apart by 1e-7 after the crossing.)"""
     variables = {"steps": 200000}
     serial = thermo(liggghts(args, "in.transit", dict(variables, px=1), work)[1])
     split = thermo(liggghts(args, "in.transit", dict(variables, px=2), work, ranks=2)[1])
@@ -149,11 +146,11 @@ def case_parallel(args, work):
         early = max(abs(serial[i][column] - split[i][column]) for i in before) / scale
         check(f"parallel_max_difference_{column}_before_boundary", f"{early:.3g}", early < 1e-10,
               f"< 1e-10 of its largest value over the {len(before)} rows with both centres at x < 14.5")
-    for column, bound in (("p", 1e-5), ("x1", 1e-5), ("y2", 1e-5), ("fx", 1e-3)):
+    for column in ("p", "x1", "y2", "fx"):
         scale = max(abs(r[column]) for r in serial)
         worst = max(abs(a[column] - b[column]) for a, b in zip(serial, split)) / scale
-        check(f"parallel_max_difference_{column}", f"{worst:.3g}", worst < bound,
-              f"< {bound:g} of its largest value over the whole run (refills at the rank boundary)")
+        check(f"parallel_max_difference_{column}", f"{worst:.3g}", worst < 1e-9,
+              "< 1e-9 of its largest value over the whole run (round-off: sums in another order)")
 
 
 def case_restart(args, work):

@@ -39,6 +39,14 @@ void SphereCoupling::map_and_refill(const ParticleView& view) {
   }
   {
     StageTimer t(times_.refill);
+    // The refill averages the density of the node's fluid neighbours; next to a rank (or
+    // periodic) boundary some are halo nodes, which still hold the values of the last
+    // exchange (before the previous collide-stream). Bring them up to date first, so that
+    // the refill, and the run, equal the serial one to round-off. The exchange is collective:
+    // every rank takes it when any rank refills (most steps uncover no node).
+    long long uncovered = static_cast<long long>(change.uncovered.size());
+    solver_.decomposition().comm.sum(&uncovered, 1);
+    if (uncovered > 0) solver_.exchange_halo();
     mass_ = refill_uncovered(change, mapping_, view, options_.refill, solver_);
   }
   mapping_.commit(change, solver_.node_types());
