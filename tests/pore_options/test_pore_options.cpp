@@ -72,4 +72,7 @@ TEST(PoreOptions, BadValuesNameTheKeywordAndRange) {
                 .find("drive is required"),
             std::string::npos);
   EXPECT_NE(error_of("dx 1 vtk 10").find("'vtk (directory)' needs a value"), std::string::npos);
+  // Two drives used to be accepted silently, the last one winning.
+  EXPECT_NE(error_of("dx 1" + kScene + " pressure_loss 0.01").find("exclude each other"),
+            std::string::npos);
 }
