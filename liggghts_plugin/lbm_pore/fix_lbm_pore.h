@@ -115,11 +115,12 @@ class FixLbmPore : public Fix {
   std::unique_ptr<coupling::LubricationCorrection> lubrication_;
   std::unique_ptr<lbm::VtkSeriesWriter> vtk_;
   lbm_pore::LatticeParticles particles_;
-  std::vector<int> view_of_atom_;
-  std::vector<double*> wall_velocity_rows_;
-  std::vector<contact::SurfacePoint> wall_points_;  // scratch of find_walls()  // rows of loads_ at the fluid-seen velocity  // atom index -> view entry, -1 outside the group
+  std::vector<int> view_of_atom_;                   // atom index -> view entry, -1 outside the group
+  std::vector<double*> wall_velocity_rows_;         // rows of loads_ at the fluid-seen velocity
+  std::vector<contact::SurfacePoint> wall_points_;  // scratch of the wall searches
+  std::vector<char> bonded_;                        // scratch of the deposit count
   class NeighList* list_ = nullptr;
-  double** loads_ = nullptr;       // per atom: force (3), torque (3), script units
+  double** loads_ = nullptr;       // per atom, layout in fix_lbm_pore_internal.h (script units)
   int nmax_ = 0;
   double gravity_[3] = {0.0, 0.0, 0.0};  // fix gravity's acceleration, 0 without one
   bool has_gravity_ = false;

@@ -120,7 +120,8 @@ void FixLbmPore::check_fluid_state() {
 // (adhesion, 0.03 R).
 void FixLbmPore::update_particle_diagnostics() {
   const auto view = particles_.view();
-  std::vector<char> bonded(view.num_total, 0);
+  std::vector<char>& bonded = bonded_;  // reused: no allocation per fluid step
+  bonded.assign(view.num_total, 0);
   double** x = atom->x;
   const double* radius = atom->radius;
   if (list_) {
@@ -140,15 +141,19 @@ void FixLbmPore::update_particle_diagnostics() {
       }
     }
   }
-  std::vector<contact::SurfacePoint> points;
   double force_x = 0.0;
   for (std::size_t p = 0; p < view.num_owned; ++p) {
     const int i = particles_.atom(p);
     force_x += loads_[i][0];
     if (bonded[p]) continue;
-    surface_->find({x[i][0], x[i][1], x[i][2]},
-                   radius[i] * (1.0 + contact::kAttractionRangeFactor), points);
-    bonded[p] = !points.empty();
+    const double reach = radius[i] * (1.0 + contact::kAttractionRangeFactor);
+    if (options_.lubrication) {
+      // find_walls() searched this fluid step already, over a wider reach.
+      bonded[p] = loads_[i][kWallKnown] > 0.0 && loads_[i][kWallDistance] <= reach;
+    } else {
+      surface_->find({x[i][0], x[i][1], x[i][2]}, reach, wall_points_);
+      bonded[p] = !wall_points_.empty();
+    }
   }
   coupling::DepositionCriteria criteria;
   if (options_.deposit_speed >= 0.0)
