@@ -4,8 +4,10 @@
 #include <cstring>
 #include <fstream>
 
+#include "lbm/collide_stream.h"
 #include "lbm/d3q19.h"
 #include "lbm/input_error.h"
+#include "lbm/node_type.h"
 
 namespace lbm {
 namespace {
@@ -96,6 +98,16 @@ void read_checkpoint(FluidSolver& solver, const std::string& path) {
   });
   if (!in) throw InputError("fluid checkpoint '" + file + "': truncated");
   solver.set_time_step(h.time_step);
+}
+
+void release_moving_nodes(FluidSolver& solver) {
+  auto& types = solver.node_types();
+  auto& f = solver.populations();
+  for (std::size_t cell = 0; cell < types.size(); ++cell) {
+    if (types[cell] != kMoving) continue;
+    types[cell] = kFluid;
+    for (int q = 0; q < D3Q19::Q; ++q) f.at(q, cell) = equilibrium(q, 1.0, {0.0, 0.0, 0.0});
+  }
 }
 
 }  // namespace lbm

@@ -1,5 +1,7 @@
 #include "lbm/pore_scene.h"
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "lbm/input_error.h"
@@ -53,6 +55,18 @@ VoxelGeometry make_pore_scene(const PoreSceneSpec& s, double spacing, std::array
       for (int i = r.pore_begin; i < r.pore_end; ++i) g.set_solid(i, j, k, true);
     }
   return g;
+}
+
+double narrowest_section_diameter(const VoxelGeometry& geometry) {
+  const auto& d = geometry.dims();
+  double narrowest = 1e300;
+  for (int i = 0; i < d[0]; ++i) {
+    int open = 0;
+    for (int k = 0; k < d[2]; ++k)
+      for (int j = 0; j < d[1]; ++j) open += !geometry.is_solid(i, j, k);
+    narrowest = std::min(narrowest, double(open));
+  }
+  return std::sqrt(4.0 * narrowest / M_PI);
 }
 
 }  // namespace lbm

@@ -15,6 +15,22 @@ std::string FluidStateProblem::describe() const {
   return text;
 }
 
+std::string drive_limit_violation(const FlowDrive& drive) {
+  char text[300] = "";
+  if (drive.kind == FlowDrive::kInletVelocity) {
+    if (std::abs(drive.inlet_velocity) > kMaxLatticeSpeed)
+      std::snprintf(text, sizeof text, "%.3g in lattice units, above the stable limit %.2f (lattice Mach %.2f)",
+                    drive.inlet_velocity, kMaxLatticeSpeed, drive.inlet_velocity / kSoundSpeed);
+  } else if (drive.kind == FlowDrive::kPressureLoss) {
+    // p = c_s^2 rho: a lattice pressure difference is a density difference divided by 3.
+    if (std::abs(drive.pressure_loss) > kMaxDensityDifference / 3.0)
+      std::snprintf(text, sizeof text,
+                    "a lattice density difference of %.3g, above the weakly compressible limit %g",
+                    3.0 * drive.pressure_loss, kMaxDensityDifference);
+  }
+  return text;
+}
+
 namespace {
 template <class Visit>
 void for_owned_fluid(const FluidSolver& s, Visit visit) {

@@ -1,23 +1,15 @@
 #include "fix_lbm_pore.h"
 
-#include "fix_lbm_pore_internal.h"
-
 #include <mpi.h>
 
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
-#include <limits>
 
 #include "atom.h"
 #include "comm.h"
-#include "contact/short_range_attraction.h"
-#include "contact/voxel_surface.h"
+#include "coupling/diagnostics/particle_probes.h"
 #include "coupling/lattice_frame.h"
-#include "coupling/lubrication/lubrication.h"
-#include "coupling/periodic_box.h"
 #include "coupling/sphere_coupling.h"
 #include "coupling/unit_conversion.h"
 #include "domain.h"
@@ -25,18 +17,12 @@
 #include "fix_gravity.h"
 #include "force.h"
 #include "lbm/checkpoint.h"
-#include "lbm/collide_stream.h"
-#include "lbm/decomposition.h"
 #include "lbm/fluid_solver.h"
 #include "lbm/input_error.h"
-#include "plugin_common/stop_run.h"
-#include "lbm/macroscopic.h"
-#include "lbm/node_type.h"
 #include "lbm/pore_scene.h"
 #include "lbm/stability.h"
 #include "lbm/voxel_file.h"
 #include "lbm/vtk_output.h"
-#include "memory.h"
 #include "modify.h"
 #include "neigh_list.h"
 #include "neigh_request.h"
@@ -44,11 +30,14 @@
 #include "update.h"
 
 using namespace LAMMPS_NS;
-using namespace lbm_pore::slots;
-using namespace lbm_pore::limits;
 
 namespace {
 int cells(double length, double dx) { return static_cast<int>(std::lround(length / dx)); }
+
+// Wraps a coupling/ or lbm/ error into LIGGGHTS's, naming the command once.
+std::string fix_message(const std::string& what) {
+  return what.rfind("fix lbm/pore", 0) == 0 ? what : "fix lbm/pore: " + what;
+}
 
 coupling::MovingWallScheme wall_scheme(const std::string& name) {
   if (name == "bouzidi") return coupling::MovingWallScheme::kBouzidi;
@@ -63,32 +52,27 @@ FixLbmPore::FixLbmPore(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg, arg) 
     options_ = lbm_pore::parse_pore_options(words);
     build_geometry();
   } catch (const lbm::InputError& e) {
-    const std::string what = e.what();  // the parser's messages already name the command
-    error->all(FLERR, (what.rfind("fix lbm/pore", 0) == 0 ? what : "fix lbm/pore: " + what).c_str());
+    error->all(FLERR, fix_message(e.what()).c_str());
   }
   if (!atom->radius_flag)
     error->all(FLERR, "fix lbm/pore needs per-atom radii: use atom_style granular (or sphere)");
   vector_flag = 1;
-  size_vector = kNumDiagnostics;
+  size_vector = coupling::PoreMonitor::kCount;
   global_freq = 1;
   extvector = 0;
   restart_global = 1;
   restart_peratom = 1;
   nevery = 1;
   comm_forward = 6;  // velocity, angular velocity
-  comm_reverse = kSummedPerAtom;
-  diagnostics_.assign(kNumDiagnostics, 0.0);
+  comm_reverse = lbm_pore::AtomCouplingState::kSummed;
   grow_arrays(atom->nmax);
   atom->add_callback(0);  // grow/copy/exchange
   atom->add_callback(1);  // restart
-  for (int i = 0; i < atom->nmax; ++i)
-    for (int k = 0; k < kLoadsPerAtom; ++k) loads_[i][k] = 0.0;
 }
 
 FixLbmPore::~FixLbmPore() {
   atom->delete_callback(id, 0);
   atom->delete_callback(id, 1);
-  memory->destroy(loads_);
 }
 
 int FixLbmPore::setmask() { return FixConst::POST_FORCE | FixConst::END_OF_STEP; }
@@ -106,19 +90,21 @@ void FixLbmPore::init() {
       throw lbm::InputError("the DEM time step or n_dem changed between runs (tau " +
                             std::to_string(units_->tau()) + " -> " + std::to_string(units->tau()) +
                             "); the fluid's relaxation time is fixed once the lattice exists");
-    units_ = std::move(units);
-    if (!solver_) build_lattice();
+    if (!solver_) {
+      units_ = std::move(units);
+      build_lattice();
+    }
   } catch (const lbm::InputError& e) {
-    error->all(FLERR, (std::string("fix lbm/pore: ") + e.what()).c_str());
+    error->all(FLERR, fix_message(e.what()).c_str());
   }
   if (!resume_checkpoint_.empty()) {
     try {
       lbm::read_checkpoint(*solver_, resume_checkpoint_);
-      fluid_steps_ = solver_->time_step();
-      resumed_ = true;
     } catch (const lbm::InputError& e) {
       error->all(FLERR, (std::string("fix lbm/pore: restart: ") + e.what()).c_str());
     }
+    fluid_steps_ = solver_->time_step();
+    resumed_ = true;
     resume_checkpoint_.clear();
   }
   if (comm->ghost_velocity == 0)
@@ -147,18 +133,14 @@ void FixLbmPore::init() {
 
 void FixLbmPore::init_list(int, NeighList* list) { list_ = list; }
 
-// Buoyancy: the fluid carries no body force (it is driven through its boundaries), so its
-// pressure holds no hydrostatic part and the particles feel no Archimedes force from it.
-// With fix gravity on, each particle gets -rho_f V g in addition, which makes the net
-// weight (rho_p - rho_f) V g.
+// Buoyancy needs fix gravity's acceleration (coupling/force/substep_load.h).
 void FixLbmPore::find_gravity() {
   has_gravity_ = false;
-  for (int a = 0; a < 3; ++a) gravity_[a] = 0.0;
+  gravity_ = {0.0, 0.0, 0.0};
   for (int i = 0; i < modify->nfix; ++i) {
     if (std::strcmp(modify->fix[i]->style, "gravity") != 0) continue;
-    auto* gravity = static_cast<FixGravity*>(modify->fix[i]);
     double g[3];
-    gravity->get_gravity(g);
+    static_cast<FixGravity*>(modify->fix[i])->get_gravity(g);
     for (int a = 0; a < 3; ++a) gravity_[a] += g[a];
     has_gravity_ = true;
   }
@@ -186,54 +168,22 @@ void FixLbmPore::build_geometry() {
     spec.outlet_length = cells(options_.outlet_length, dx);
     spec.width = cells(options_.width, dx);
     spec.pore_diameter = options_.pore_diameter / dx;
-    pore_diameter_lattice_ = spec.pore_diameter;
     geometry_ = std::make_shared<lbm::VoxelGeometry>(lbm::make_pore_scene(spec, dx, origin));
-    const auto r = lbm::regions_of(spec);
-    pore_.axis = 0;
-    // "Located inside the pore radius" (paper Sec. III): the pore's cylinder, extended
-    // upstream through the free region so a clog sitting in the pore's mouth counts too.
-    pore_.start = r.inlet_end - 0.5;
-    pore_.end = r.pore_end - 0.5;
-    pore_.centre = {r.axis_y, r.axis_z};
-    pore_.diameter = spec.pore_diameter;
-    inlet_x_ = r.inlet_end - 0.5;
-    outlet_x_ = r.outlet_begin - 0.5;
+    monitor_setup_ = coupling::pore_scene_monitor(spec);
   } else {
-    const auto file = lbm::load_voxel_file(options_.voxel_file);
-    if (std::abs(file.spacing() - dx) > 1e-9 * dx)
-      throw lbm::InputError("scene voxels: the file's spacing " + std::to_string(file.spacing()) +
+    auto file = std::make_shared<lbm::VoxelGeometry>(lbm::load_voxel_file(options_.voxel_file));
+    if (std::abs(file->spacing() - dx) > 1e-9 * dx)
+      throw lbm::InputError("scene voxels: the file's spacing " + std::to_string(file->spacing()) +
                             " differs from dx " + std::to_string(dx));
-    // The lattice sits where the box (or 'origin') says; the file's own origin is ignored.
-    auto placed = std::make_shared<lbm::VoxelGeometry>(file.dims(), dx, origin);
-    const auto& d = file.dims();
-    // The pore of an arbitrary geometry: its narrowest open cross-section, as the
-    // equivalent circle sqrt(4 A / pi); deposits count anywhere in the lattice.
-    double narrowest = 1e300;
-    for (int i = 0; i < d[0]; ++i) {
-      int open = 0;
-      for (int k = 0; k < d[2]; ++k)
-        for (int j = 0; j < d[1]; ++j) {
-          const bool solid = file.is_solid(i, j, k);
-          placed->set_solid(i, j, k, solid);
-          open += !solid;
-        }
-      narrowest = std::min(narrowest, double(open));
-    }
-    geometry_ = placed;
-    pore_diameter_lattice_ = std::sqrt(4.0 * narrowest / M_PI);
-    pore_.axis = 0;
-    pore_.start = -0.5;
-    pore_.end = d[0] - 0.5;
-    pore_.centre = {0.5 * (d[1] - 1), 0.5 * (d[2] - 1)};
-    pore_.diameter = 1e30;
-    inlet_x_ = 0.5;
-    outlet_x_ = d[0] - 1.5;
+    file->place_at(origin);  // where the box (or 'origin') says; the file's own is ignored
+    geometry_ = file;
+    monitor_setup_ = coupling::voxel_geometry_monitor(*geometry_);
   }
   surface_ = std::make_unique<contact::VoxelSurface>(*geometry_);
 }
 
 // Builds the lattice frame and the fluid solver on LIGGGHTS's own subdomains (each rank
-// owns the nodes inside its subdomain).
+// owns the nodes inside its subdomain), and the coupling objects that work on them.
 void FixLbmPore::build_lattice() {
   const double dx = options_.dx;
   frame_ = std::make_unique<coupling::LatticeFrame>();
@@ -274,31 +224,18 @@ void FixLbmPore::build_lattice() {
   p.periodic = {false, options_.lateral_periodic, options_.lateral_periodic};
   lbm::FlowDrive drive;
   drive.axis = 0;
-  if (options_.drive == lbm_pore::PoreOptions::Drive::kVelocity) {
-    drive.kind = lbm::FlowDrive::kInletVelocity;
-    drive.inlet_velocity = units_->velocity_to_lattice(options_.drive_value);
-    if (std::abs(drive.inlet_velocity) > kMaxLatticeSpeed) {
-      char text[400];
-      std::snprintf(text, sizeof text,
-                    "velocity: %g is %.3g in lattice units, above the stable limit %.2f "
-                    "(lattice Mach %.2f); lower 'velocity', lower n_dem or the DEM time step, "
-                    "or refine dx",
-                    options_.drive_value, drive.inlet_velocity, kMaxLatticeSpeed,
-                    drive.inlet_velocity / kSoundSpeed);
-      throw lbm::InputError(text);
-    }
-  } else {
-    drive.kind = lbm::FlowDrive::kPressureLoss;
-    drive.pressure_loss = units_->pressure_to_lattice(options_.drive_value);
-    // A density difference of 10 % is far outside the weakly compressible regime.
-    if (std::abs(drive.pressure_loss) > 0.1 / 3.0) {
-      char text[400];
-      std::snprintf(text, sizeof text,
-                    "pressure_loss: %g is a lattice density difference of %.3g, above the "
-                    "weakly compressible limit 0.1; lower 'pressure_loss' or n_dem, or refine dx",
-                    options_.drive_value, 3.0 * drive.pressure_loss);
-      throw lbm::InputError(text);
-    }
+  const bool by_velocity = options_.drive == lbm_pore::PoreOptions::Drive::kVelocity;
+  drive.kind = by_velocity ? lbm::FlowDrive::kInletVelocity : lbm::FlowDrive::kPressureLoss;
+  drive.inlet_velocity = by_velocity ? units_->velocity_to_lattice(options_.drive_value) : 0.0;
+  drive.pressure_loss = by_velocity ? 0.0 : units_->pressure_to_lattice(options_.drive_value);
+  const std::string violation = lbm::drive_limit_violation(drive);
+  if (!violation.empty()) {
+    char text[500];
+    std::snprintf(text, sizeof text, "%s: %g is %s; lower '%s'%s, or refine dx",
+                  by_velocity ? "velocity" : "pressure_loss", options_.drive_value, violation.c_str(),
+                  by_velocity ? "velocity" : "pressure_loss",
+                  by_velocity ? ", lower n_dem or the DEM time step" : " or n_dem");
+    throw lbm::InputError(text);
   }
 
   lbm::Decomposition d;
@@ -329,10 +266,14 @@ void FixLbmPore::build_lattice() {
   lp.rho = 1.0;
   lp.nu = units_->nu_lattice();
   lp.cutoff = options_.lubrication_cutoff;
-  lubrication_ = std::make_unique<coupling::LubricationCorrection>(lp);
-  inlet_counter_ = std::make_unique<coupling::PlaneCrossingCounter>(0, inlet_x_);
-  outlet_counter_ = std::make_unique<coupling::PlaneCrossingCounter>(0, outlet_x_);
-
+  lubrication_ = std::make_unique<coupling::LubricationKernel>(
+      lp, coupling::LubricationScales{dx, units_->dt_lbm(), units_->force_unit()});
+  if (options_.deposit_speed >= 0.0)
+    monitor_setup_.criteria.speed_threshold = units_->velocity_to_lattice(options_.deposit_speed);
+  else if (by_velocity)  // deposits are "at zero or very low velocity" (paper Sec. III)
+    monitor_setup_.criteria.speed_threshold = coupling::kDepositSpeedFraction * std::abs(drive.inlet_velocity);
+  monitor_ = std::make_unique<coupling::PoreMonitor>(monitor_setup_, *units_);
+  if (!restored_values_.empty()) monitor_->restore(restored_values_.data());
   if (options_.vtk_every > 0)
     vtk_ = std::make_unique<lbm::VtkSeriesWriter>(options_.vtk_directory, "fluid");
 }
@@ -347,12 +288,12 @@ void FixLbmPore::print_setup() const {
       "fix lbm/pore: lattice %d x %d x %d nodes (dx = %g), %s\n"
       "fix lbm/pore: DEM step %g, fluid step %g = %d DEM steps; pore diameter %.2f cells\n",
       dims[0], dims[1], dims[2], options_.dx, units_->summary().c_str(), update->dt,
-      units_->dt_lbm(), options_.n_dem, pore_diameter_lattice_);
+      units_->dt_lbm(), options_.n_dem, monitor_setup_.pore_diameter);
   if (drive.kind == lbm::FlowDrive::kInletVelocity)
     n += std::snprintf(text + n, sizeof text - n,
                        "fix lbm/pore: inlet velocity %g = %.4g lattice, lattice Mach %.3g\n",
                        options_.drive_value, drive.inlet_velocity,
-                       std::abs(drive.inlet_velocity) / kSoundSpeed);
+                       std::abs(drive.inlet_velocity) / lbm::kSoundSpeed);
   else
     n += std::snprintf(text + n, sizeof text - n,
                        "fix lbm/pore: pressure loss %g = %.4g lattice (density difference %.3g)\n",
@@ -368,117 +309,98 @@ void FixLbmPore::print_setup() const {
 void FixLbmPore::setup(int vflag) {
   // After every fix's init(): fix gravity sets its acceleration there.
   find_gravity();
-  run_start_ = now();
+  coupling::SubstepLoadParameters lp;
+  lp.dt_fluid = units_->dt_lbm();
+  lp.buoyancy = has_gravity_;
+  lp.fluid_density = options_.rho;
+  lp.gravity = gravity_;
+  load_model_ = std::make_unique<coupling::SubstepLoadModel>(lp);
+  pairs_step_ = -1;  // the neighbour list was rebuilt (atoms may have been re-sorted)
+  run_start_ = MPI_Wtime();
   run_fluid_steps_ = 0;
   time_fluid_ = time_lubrication_ = time_diagnostics_ = 0.0;
-  if (resumed_) resume_mapping();
+  if (resumed_) {
+    resumed_ = false;
+    lbm::release_moving_nodes(*solver_);
+    gather_particles(false);
+    coupling_->map_and_refill(particles_.view());
+  }
   gather_particles(false);
   find_walls();
-  update_particle_diagnostics();
-  update_diagnostics();
+  record_particles();
+  monitor_->update_fluid(*solver_, fluid_steps_);
   if (vtk_ && fluid_steps_ == 0) vtk_->write(*solver_, 0.0);
   post_force(vflag);
 }
 
-// The hydrodynamic load of the last fluid step acts unchanged on every DEM substep (paper,
-// "Coupling of Fluid and Particles"); the lubrication correction and buoyancy follow the
-// particles every substep.
+// The group's pairs of the neighbour list, collected once per DEM step (the list changes
+// only when LIGGGHTS rebuilds it, at the start of a step).
+void FixLbmPore::collect_group_pairs() {
+  if (pairs_step_ == update->ntimestep || !list_) return;
+  pairs_step_ = update->ntimestep;
+  pairs_.clear();
+  const int* mask = atom->mask;
+  for (int ii = 0; ii < list_->inum; ++ii) {
+    const int i = list_->ilist[ii];
+    if (!(mask[i] & groupbit)) continue;
+    for (int jj = 0; jj < list_->numneigh[i]; ++jj) {
+      const int j = list_->firstneigh[i][jj] & NEIGHMASK;
+      if (mask[j] & groupbit) pairs_.push_back({i, j});
+    }
+  }
+}
+
+coupling::ParticleView FixLbmPore::atoms_view() const {
+  coupling::ParticleView view;
+  view.num_owned = atom->nlocal;
+  view.num_total = atom->nlocal + atom->nghost;
+  view.position = atom->x[0];
+  view.velocity = atom->v[0];
+  view.radius = atom->radius;
+  return view;
+}
+
+// Every DEM substep: the substep load model's force and torque (the load of the last fluid
+// step), buoyancy, and the lubrication correction that follows the particles.
 void FixLbmPore::post_force(int) {
   double** f = atom->f;
   double** v = atom->v;
   double** torque = atom->torque;
-  const int* mask = atom->mask;
-  const int nlocal = atom->nlocal;
-  const double* radius = atom->radius;
-  for (int i = 0; i < nlocal; ++i) {
-    if (!(mask[i] & groupbit)) continue;
-    own_slot(i);
-    // F - C (v - v_step): the fluid resists a velocity change within the substeps at once.
-    const double C = loads_[i][kCoefficient];
-    for (int a = 0; a < 3; ++a) f[i][a] += loads_[i][a] - C * (v[i][a] - loads_[i][kStepVelocity + a]);
+  for (int i = 0; i < atom->nlocal; ++i) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    const auto load = load_model_->at_substep(own_state(i).load, {v[i][0], v[i][1], v[i][2]}, atom->radius[i]);
+    for (int a = 0; a < 3; ++a) f[i][a] += load.hydrodynamic[a];
     if (torque)
-      for (int a = 0; a < 3; ++a) torque[i][a] += loads_[i][3 + a];
-    if (has_gravity_) {
-      const double volume = 4.0 / 3.0 * M_PI * radius[i] * radius[i] * radius[i];
-      for (int a = 0; a < 3; ++a) f[i][a] -= options_.rho * volume * gravity_[a];
-    }
+      for (int a = 0; a < 3; ++a) torque[i][a] += load.torque[a];
+    if (has_gravity_)
+      for (int a = 0; a < 3; ++a) f[i][a] += load.buoyancy[a];
   }
-  if (options_.lubrication && list_) {
-    const double start = now();
-    add_lubrication(f);
-    time_lubrication_ += now() - start;
-  }
-}
-
-// Pair and wall lubrication on the owned atoms, from the fix's granular half neighbor list
-// (newton off: an owned-ghost pair is listed on both ranks and each side adds its own half).
-void FixLbmPore::add_lubrication(double** f) {
-  double** x = atom->x;
-  double** v = atom->v;
-  const double* radius = atom->radius;
-  const int* mask = atom->mask;
-  const int nlocal = atom->nlocal;
-  const double dx = options_.dx;
-  const double to_lattice_velocity = units_->dt_lbm() / dx;
-  const double force_unit = units_->force_unit();
-  const double cutoff = options_.lubrication_cutoff * dx;
-  for (int ii = 0; ii < list_->inum; ++ii) {
-    const int i = list_->ilist[ii];
-    if (!(mask[i] & groupbit)) continue;
-    const int* neighbors = list_->firstneigh[i];
-    for (int jj = 0; jj < list_->numneigh[i]; ++jj) {
-      const int j = neighbors[jj] & NEIGHMASK;
-      if (!(mask[j] & groupbit)) continue;
-      const coupling::Vec3 d{(x[j][0] - x[i][0]) / dx, (x[j][1] - x[i][1]) / dx,
-                             (x[j][2] - x[i][2]) / dx};
-      const double gap = std::sqrt(coupling::dot(d, d)) * dx - radius[i] - radius[j];
-      if (gap >= cutoff) continue;
-      const coupling::Vec3 vi{v[i][0] * to_lattice_velocity, v[i][1] * to_lattice_velocity,
-                              v[i][2] * to_lattice_velocity};
-      const coupling::Vec3 vj{v[j][0] * to_lattice_velocity, v[j][1] * to_lattice_velocity,
-                              v[j][2] * to_lattice_velocity};
-      const auto F = lubrication_->pair_force(radius[i] / dx, radius[j] / dx, d, vi, vj);
-      for (int a = 0; a < 3; ++a) f[i][a] += F[a] * force_unit;
-      if (j < nlocal)
-        for (int a = 0; a < 3; ++a) f[j][a] -= F[a] * force_unit;
-    }
-  }
-  // The nearest wall was found at the last fluid step; within a fluid step a particle moves
-  // less than half a cell, so the distance follows from its displacement along that normal.
-  for (int i = 0; i < nlocal; ++i) {
-    if (!(mask[i] & groupbit)) continue;
-    const double* load = loads_[i];
-    if (load[kWallKnown] <= 0.0) continue;
-    double distance = load[kWallDistance];
-    for (int a = 0; a < 3; ++a) distance += load[kWallNormal + a] * (x[i][a] - load[kPreviousPosition + a]);
-    if (distance - radius[i] >= cutoff) continue;
-    coupling::WallDistance wall;
-    wall.distance = std::max(distance, 0.0) / dx;
-    wall.normal = {load[kWallNormal], load[kWallNormal + 1], load[kWallNormal + 2]};
-    const coupling::Vec3 vi{v[i][0] * to_lattice_velocity, v[i][1] * to_lattice_velocity,
-                            v[i][2] * to_lattice_velocity};
-    const auto F = lubrication_->wall_force(radius[i] / dx, vi, wall);
-    for (int a = 0; a < 3; ++a) f[i][a] += F[a] * force_unit;
-  }
+  if (!options_.lubrication || !list_) return;
+  const double start = MPI_Wtime();
+  collect_group_pairs();
+  const auto view = atoms_view();
+  lubrication_->add_pair_forces(view, pairs_, f[0]);
+  static const coupling::NearestWall kNoWall;
+  const auto wall_of = [&](std::size_t i) -> const coupling::NearestWall& {
+    return (atom->mask[i] & groupbit) ? state_[i].wall : kNoWall;
+  };
+  lubrication_->add_wall_forces(view, wall_of, f[0]);
+  time_lubrication_ += MPI_Wtime() - start;
 }
 
 // The nearest wall of every owned particle, within the lubrication reach plus the farthest a
-// particle may move in a fluid step; used by add_lubrication until the next fluid step.
+// particle may move in a fluid step; followed along its normal until the next fluid step.
 void FixLbmPore::find_walls() {
   if (!options_.lubrication) return;
-  double** x = atom->x;
-  const double* radius = atom->radius;
-  const double reach = (options_.lubrication_cutoff + kMaxShiftPerFluidStep) * options_.dx;
+  const double reach = (options_.lubrication_cutoff + coupling::kMaxShiftPerFluidStep) * options_.dx;
   for (int i = 0; i < atom->nlocal; ++i) {
-    if (!(atom->mask[i] & groupbit)) continue;
-    double* load = loads_[i];
-    surface_->find({x[i][0], x[i][1], x[i][2]}, radius[i] + reach, wall_points_);
-    load[kWallKnown] = wall_points_.empty() ? 0.0 : 1.0;
-    if (wall_points_.empty()) continue;
-    const auto nearest = std::min_element(wall_points_.begin(), wall_points_.end(),
-                                           [](const auto& a, const auto& b) { return a.distance < b.distance; });
-    load[kWallDistance] = nearest->distance;
-    for (int a = 0; a < 3; ++a) load[kWallNormal + a] = nearest->normal[a];
+    auto& wall = own_state(i).wall;
+    if (!(atom->mask[i] & groupbit)) {
+      wall.known = false;
+      continue;
+    }
+    const double* x = atom->x[i];
+    wall = coupling::find_nearest_wall(*surface_, {x[0], x[1], x[2]}, atom->radius[i] + reach, wall_points_);
   }
 }
 
@@ -497,22 +419,20 @@ void FixLbmPore::gather_particles(bool advance) {
   double** v = atom->v;
   const double dt_lbm = units_->dt_lbm();
   for (int i = 0; i < atom->nlocal; ++i) {
-    own_slot(i);
-    double* load = loads_[i];
-    if (advance && load[kHasPrevious] > 0.0) {
-      double d[3] = {x[i][0] - load[kPreviousPosition], x[i][1] - load[kPreviousPosition + 1],
-                     x[i][2] - load[kPreviousPosition + 2]};
+    auto& s = own_state(i);
+    if (advance && s.has_step_position) {
+      double d[3] = {x[i][0] - s.step_position[0], x[i][1] - s.step_position[1], x[i][2] - s.step_position[2]};
       domain->minimum_image(d);  // an atom wrapped through a periodic face
-      for (int a = 0; a < 3; ++a) load[kWallVelocity + a] = d[a] / dt_lbm;
+      for (int a = 0; a < 3; ++a) s.fluid_velocity[a] = d[a] / dt_lbm;
     } else {
-      for (int a = 0; a < 3; ++a) load[kWallVelocity + a] = v[i][a];
+      for (int a = 0; a < 3; ++a) s.fluid_velocity[a] = v[i][a];
     }
-    for (int a = 0; a < 3; ++a) load[kPreviousPosition + a] = x[i][a];
-    load[kHasPrevious] = 1.0;
+    s.step_position = {x[i][0], x[i][1], x[i][2]};
+    s.has_step_position = true;
   }
   comm->forward_comm_fix(this);
-  wall_velocity_rows_.resize(atom->nlocal + atom->nghost);
-  for (int i = 0; i < atom->nlocal + atom->nghost; ++i) wall_velocity_rows_[i] = loads_[i] + kWallVelocity;
+  fluid_velocity_rows_.resize(atom->nlocal + atom->nghost);
+  for (int i = 0; i < atom->nlocal + atom->nghost; ++i) fluid_velocity_rows_[i] = state_[i].fluid_velocity.data();
   lbm_pore::AtomArrays atoms;
   atoms.nlocal = atom->nlocal;
   atoms.nghost = atom->nghost;
@@ -520,118 +440,68 @@ void FixLbmPore::gather_particles(bool advance) {
   atoms.groupbit = groupbit;
   atoms.tag = atom->tag;
   atoms.x = atom->x;
-  atoms.v = wall_velocity_rows_.data();
+  atoms.v = fluid_velocity_rows_.data();
   atoms.omega = atom->omega_flag ? atom->omega : nullptr;
   atoms.radius = atom->radius;
   particles_.gather(atoms, *frame_, dt_lbm);
-  view_of_atom_.assign(atom->nlocal + atom->nghost, -1);
-  for (std::size_t p = 0; p < particles_.size(); ++p) view_of_atom_[particles_.atom(p)] = int(p);
-}
-
-long long FixLbmPore::global_particle_count() const {
-  long long local = static_cast<long long>(particles_.num_owned()) +
-                    static_cast<long long>(coupling_->mapping().moving_cells().size());
-  long long total = 0;
-  MPI_Allreduce(&local, &total, 1, MPI_LONG_LONG, MPI_SUM, world);
-  return total;
 }
 
 void FixLbmPore::fluid_step() {
-  const double start = now();
+  const double start = MPI_Wtime();
   gather_particles(true);
-  const double walls_start = now();
+  const double walls_start = MPI_Wtime();
   find_walls();
-  const double walls_time = now() - walls_start;
+  const double walls_time = MPI_Wtime() - walls_start;
   time_lubrication_ += walls_time;
   check_particle_speed();
   // Without particles (and none left to unmap) the step is the pure fluid step: a scene pays
   // only for what it uses.
-  if (global_particle_count() == 0)
+  long long count = static_cast<long long>(particles_.num_owned()) +
+                    static_cast<long long>(coupling_->mapping().moving_cells().size());
+  MPI_Allreduce(MPI_IN_PLACE, &count, 1, MPI_LONG_LONG, MPI_SUM, world);
+  if (count == 0)
     solver_->step();
   else
     coupling_->step(particles_.view());
-  store_loads();
+  store_loads(count > 0);
   ++fluid_steps_;
   ++run_fluid_steps_;
-  time_fluid_ += now() - start - walls_time;
-  const double diagnostics_start = now();
+  time_fluid_ += MPI_Wtime() - start - walls_time;
+  const double diagnostics_start = MPI_Wtime();
   // A full scan of the lattice costs a sizeable part of a step: the NaN/runaway guard runs
   // every kCheckEvery fluid steps (a blow-up takes many steps to reach the particles), the
   // fluid diagnostics only when thermo output asks for them.
   if (fluid_steps_ % kCheckEvery == 0) check_fluid_state();
-  fluid_diagnostics_stale_ = true;
-  update_particle_diagnostics();
+  monitor_->fluid_changed();
+  record_particles();
   if (vtk_ && fluid_steps_ % options_.vtk_every == 0)
     vtk_->write(*solver_, units_->time_to_physical(double(fluid_steps_)));
-  time_diagnostics_ += now() - diagnostics_start;
+  time_diagnostics_ += MPI_Wtime() - diagnostics_start;
 }
 
 // The loads of the step, in script units, onto the atoms they belong to; ghosts' shares go
 // back to their owners (LIGGGHTS reverse communication, which also folds periodic images).
-void FixLbmPore::store_loads() {
+void FixLbmPore::store_loads(bool coupled) {
   const int ntotal = atom->nlocal + atom->nghost;
-  for (int i = 0; i < atom->nlocal; ++i)
-    for (int a = 0; a < 3; ++a) {
-      own_slot(i);
-      loads_[i][kPreviousForce + a] = loads_[i][a];
-      loads_[i][kPreviousVelocity + a] = loads_[i][kStepVelocity + a];
-    }
-  for (int i = 0; i < ntotal; ++i)
-    for (int k = 0; k < kPreviousForce; ++k) loads_[i][k] = 0.0;
+  for (int i = 0; i < ntotal; ++i) coupling::SubstepLoadModel::start_fluid_step(state_[i].load, i < atom->nlocal);
+  if (!coupled) return;  // pure fluid step: no loads
   const auto& loads = coupling_->loads();
-  if (loads.force.size() != particles_.size()) return;  // pure fluid step: no loads
   const double force_unit = units_->force_unit();
   const double torque_unit = units_->torque_to_physical(1.0);
   // C converts lattice velocity to lattice force: force_unit * dt_lbm / dx per script velocity.
   const double coefficient_unit = force_unit * units_->dt_lbm() / options_.dx;
   for (std::size_t p = 0; p < particles_.size(); ++p) {
-    const int i = particles_.atom(p);
+    auto& load = state_[particles_.atom(p)].load;
     for (int a = 0; a < 3; ++a) {
-      loads_[i][a] = loads.force[p][a] * force_unit;
-      loads_[i][3 + a] = loads.torque[p][a] * torque_unit;
+      load.force[a] = loads.force[p][a] * force_unit;
+      load.torque[a] = loads.torque[p][a] * torque_unit;
     }
-    loads_[i][kCoefficient] = loads.velocity_coefficient[p] * coefficient_unit;
+    load.coefficient = loads.velocity_coefficient[p] * coefficient_unit;
   }
   comm->reverse_comm_fix(this);
   double** v = atom->v;
-  const double* rmass = atom->rmass;
-  for (int i = 0; i < atom->nlocal; ++i) {
-    double* load = loads_[i];
-    for (int a = 0; a < 3; ++a) load[kStepVelocity + a] = v[i][a];
-    // The force's response to the particle's velocity, measured between the last two steps
-    // (secant: -dF.dv / |dv|^2). Where a particle nearly touches another or a wall, the fluid
-    // in the gap makes it several times the moving-wall term of the links, and the explicit
-    // coupling then oscillates with period two fluid steps and grows (C dt / m > 2).
-    // Applied as F - C (v - v_step) within the substeps, a C close to the true one damps that
-    // mode at any strength; bounded below by the wall term and above by a few masses.
-    double dv2 = 0.0, dFdv = 0.0;
-    for (int a = 0; a < 3; ++a) {
-      const double dv = load[kStepVelocity + a] - load[kPreviousVelocity + a];
-      dv2 += dv * dv;
-      dFdv += (load[a] - load[kPreviousForce + a]) * dv;
-    }
-    const double c_max = rmass ? kMaxCoefficientMasses * rmass[i] / units_->dt_lbm() : load[kCoefficient];
-    const double secant = dv2 > 0.0 ? -dFdv / dv2 : 0.0;
-    load[kCoefficient] = std::clamp(secant, std::min(load[kCoefficient], c_max), c_max);
-  }
-}
-
-// After read_restart: the checkpoint holds the node types of the step it was written at,
-// with zeros inside the particles. The mapping object starts empty, so the moving nodes
-// become fluid at rest and the particles are mapped afresh; where the restart was written
-// at a fluid step (a multiple of n_dem) the same nodes are covered again and the
-// continuation is exact.
-void FixLbmPore::resume_mapping() {
-  resumed_ = false;
-  auto& types = solver_->node_types();
-  auto& f = solver_->populations();
-  for (std::size_t cell = 0; cell < types.size(); ++cell) {
-    if (types[cell] != lbm::kMoving) continue;
-    types[cell] = lbm::kFluid;
-    for (int q = 0; q < lbm::D3Q19::Q; ++q) f.at(q, cell) = lbm::equilibrium(q, 1.0, {0.0, 0.0, 0.0});
-  }
-  gather_particles(false);
-  coupling_->map_and_refill(particles_.view());
+  for (int i = 0; i < atom->nlocal; ++i)
+    load_model_->finish_fluid_step(state_[i].load, {v[i][0], v[i][1], v[i][2]}, atom->rmass ? atom->rmass[i] : 0.0);
 }
 
 const coupling::LatticeFrame& FixLbmPore::frame() const { return *frame_; }

@@ -2,15 +2,19 @@
 // fix ID group lbm/pore keyword value ...
 // The lattice-Boltzmann fluid inside LIGGGHTS: owns the lattice and the voxel geometry,
 // advances the fluid once every n_dem DEM steps on LIGGGHTS's own subdomains, hands the
-// hydrodynamic force to the particles, and exposes the paper's diagnostics as a global
-// vector. The physics lives in lbm/ and coupling/; this class parses, converts units and
-// moves data between LIGGGHTS's arrays and those layers.
+// hydrodynamic load to the particles, and exposes the paper's diagnostics as a global
+// vector. The physics lives in lbm/ and coupling/ (the step pipeline, the substep load
+// model, lubrication, the pore monitor); this class parses, converts units, moves data
+// between LIGGGHTS's arrays and those objects, and calls them.
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "atom_coupling_state.h"
 #include "contact/voxel_surface.h"
-#include "coupling/diagnostics/pore_diagnostics.h"
+#include "coupling/diagnostics/pore_monitor.h"
+#include "coupling/force/substep_load.h"
+#include "coupling/lubrication/lubrication_kernel.h"
 #include "fix.h"
 #include "lattice_particles.h"
 #include "lbm_pore_options.h"
@@ -24,7 +28,6 @@ namespace coupling {
 class UnitConversion;
 struct LatticeFrame;
 class SphereCoupling;
-class LubricationCorrection;
 }  // namespace coupling
 
 namespace LAMMPS_NS {
@@ -44,12 +47,10 @@ class FixLbmPore : public Fix {
   void write_restart(FILE* fp) override;
   void restart(char* buf) override;
 
-  // Per-atom hydrodynamic load (force, torque) of the last fluid step: it acts on every
-  // DEM substep until the next fluid step, so it travels with its atom.
+  // Per-atom state (lbm_pore::AtomCouplingState): it travels with its atom.
   void grow_arrays(int nmax) override;
   void copy_arrays(int i, int j, int delflag) override;
   void set_arrays(int i) override;
-  void own_slot(int i);  // resets the slot if it belonged to another atom
   int pack_exchange(int i, double* buf) override;
   int unpack_exchange(int nlocal, double* buf) override;
   int pack_restart(int i, double* buf) override;
@@ -68,42 +69,25 @@ class FixLbmPore : public Fix {
   const lbm::VoxelGeometry& geometry() const { return *geometry_; }
   const coupling::LatticeFrame& frame() const;
 
-  // Indices of the global vector (1-based in thermo: f_ID[i] = index i-1 here).
-  enum Diagnostic {
-    kPressureLoss,      // p_in - p_out between the inlet and outlet planes (pressure units)
-    kFluidFluxInlet,    // volumetric flux through the inlet plane (volume / time)
-    kFluidFluxOutlet,   // ... and the outlet plane
-    kParticlesIn,       // particles that crossed the inlet plane downstream (cumulative)
-    kParticlesOut,      // particles that crossed the outlet plane (cumulative)
-    kDepositedVolume,   // V_dep (volume units)
-    kDepositedCount,    // number of deposited particles
-    kDepositedLength,   // L_dep = V_dep / (pi D^2 / 4)
-    kMaxFluidSpeed,     // largest fluid speed (velocity units)
-    kLatticeMach,       // largest speed / lattice speed of sound
-    kFluidSteps,        // fluid steps done
-    kParticlesInVolume,   // particle volume that crossed the inlet plane (cumulative)
-    kParticlesOutVolume,  // ... and the outlet plane
-    kHydroForceX,       // total hydrodynamic force on the group along the flow (force units)
-    kMaxParticleShift,  // largest particle displacement per fluid step, in cells
-    kNumDiagnostics
-  };
-
  private:
+  // Fluid steps between NaN/runaway scans of the lattice: a full scan costs a sizeable part
+  // of a step, and a blow-up takes many steps to reach the particles.
+  static constexpr int kCheckEvery = 100;
+
   void build_geometry();
   void build_lattice();
   void find_gravity();
   void fluid_step();
   void gather_particles(bool advance);
-  void store_loads();
-  void add_lubrication(double** f);
+  void store_loads(bool coupled);
+  void collect_group_pairs();
   void find_walls();
-  void resume_mapping();
-  void update_particle_diagnostics();
-  void update_diagnostics();
+  void record_particles();
   void print_setup() const;
   void check_fluid_state();
   void check_particle_speed();
-  long long global_particle_count() const;
+  lbm_pore::AtomCouplingState& own_state(int i);  // resets a slot that held another atom
+  coupling::ParticleView atoms_view() const;      // the atom arrays as they are (script units)
 
   lbm_pore::PoreOptions options_;
   std::unique_ptr<coupling::UnitConversion> units_;
@@ -112,25 +96,23 @@ class FixLbmPore : public Fix {
   std::unique_ptr<contact::VoxelSurface> surface_;  // wall distances for lubrication, bonds
   std::unique_ptr<lbm::FluidSolver> solver_;
   std::unique_ptr<coupling::SphereCoupling> coupling_;
-  std::unique_ptr<coupling::LubricationCorrection> lubrication_;
+  std::unique_ptr<coupling::SubstepLoadModel> load_model_;
+  std::unique_ptr<coupling::LubricationKernel> lubrication_;
+  coupling::PoreMonitorSetup monitor_setup_;  // from the geometry, before the lattice exists
+  std::unique_ptr<coupling::PoreMonitor> monitor_;
+  std::vector<double> restored_values_;       // the monitor's values from a restart file
   std::unique_ptr<lbm::VtkSeriesWriter> vtk_;
   lbm_pore::LatticeParticles particles_;
-  std::vector<int> view_of_atom_;                   // atom index -> view entry, -1 outside the group
-  std::vector<double*> wall_velocity_rows_;         // rows of loads_ at the fluid-seen velocity
+  std::vector<lbm_pore::AtomCouplingState> state_;  // per atom (owned and ghosts)
+  std::vector<double*> fluid_velocity_rows_;        // rows of state_ for the particle gather
+  std::vector<coupling::ParticlePair> pairs_;       // the group's pairs of the neighbour list
+  long long pairs_step_ = -1;                       // the DEM step pairs_ was collected at
   std::vector<contact::SurfacePoint> wall_points_;  // scratch of the wall searches
-  std::vector<char> bonded_;                        // scratch of the deposit count
+  std::vector<char> bonded_atoms_, bonded_;         // scratch of the deposit count
   class NeighList* list_ = nullptr;
-  double** loads_ = nullptr;       // per atom, layout in fix_lbm_pore_internal.h (script units)
-  int nmax_ = 0;
-  double gravity_[3] = {0.0, 0.0, 0.0};  // fix gravity's acceleration, 0 without one
+  coupling::Vec3 gravity_{0.0, 0.0, 0.0};  // fix gravity's acceleration, 0 without one
   bool has_gravity_ = false;
-  double pore_diameter_lattice_ = 0.0;
-  coupling::PoreRegion pore_;
-  std::unique_ptr<coupling::PlaneCrossingCounter> inlet_counter_, outlet_counter_;
-  double inlet_x_ = 0.0, outlet_x_ = 0.0;  // counting planes, lattice units
-  std::vector<double> diagnostics_;
   std::string resume_checkpoint_;  // set by restart(): read once the lattice exists
-  bool fluid_diagnostics_stale_ = true;  // fluid fields changed since update_diagnostics()
   bool resumed_ = false;           // the mapping must be rebuilt from the checkpoint
   long long fluid_steps_ = 0;
   // Wall-clock seconds: fluid step with the coupling stages, lubrication, diagnostics.

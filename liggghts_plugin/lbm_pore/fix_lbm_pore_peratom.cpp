@@ -1,5 +1,6 @@
-// fix lbm/pore's per-atom data: growing and moving it with its atoms, restart files (the
-// fluid goes to a companion checkpoint), and LIGGGHTS's forward/reverse communication.
+// fix lbm/pore's per-atom state: growing and moving it with its atoms, restart files (the
+// fluid goes to a companion checkpoint), and LIGGGHTS's forward/reverse communication. The
+// flat layout of the buffers is lbm_pore::AtomCouplingState's.
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -8,18 +9,17 @@
 #include "comm.h"
 #include "error.h"
 #include "fix_lbm_pore.h"
-#include "fix_lbm_pore_internal.h"
 #include "lbm/checkpoint.h"
 #include "lbm/input_error.h"
-#include "memory.h"
 #include "plugin_common/stop_run.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;
-using namespace lbm_pore::slots;
+using lbm_pore::AtomCouplingState;
 
-// Restart: the particles travel in LIGGGHTS's restart file with their loads; the fluid goes
-// to a companion checkpoint (one file per rank) whose name is stored in the restart file.
+// Restart: the particles travel in LIGGGHTS's restart file with their state; the fluid goes
+// to a companion checkpoint (one file per rank) whose name is stored in the restart file,
+// after the monitor's values (the cumulative particle fluxes).
 void FixLbmPore::write_restart(FILE* fp) {
   std::string prefix = options_.checkpoint_prefix.empty() ? std::string(id) + ".fluid"
                                                           : options_.checkpoint_prefix;
@@ -33,68 +33,66 @@ void FixLbmPore::write_restart(FILE* fp) {
     lbm_pore::stop_on_this_rank(error, comm->me, screen, logfile, e.what());
   }
   if (comm->me == 0) {
-    const int size = static_cast<int>(path.size()) + 1 + 8 * kNumDiagnostics;
+    const auto& values = monitor_->values();
+    const int size = static_cast<int>(path.size()) + 1 + 8 * static_cast<int>(values.size());
     std::fwrite(&size, sizeof(int), 1, fp);
-    std::fwrite(diagnostics_.data(), sizeof(double), kNumDiagnostics, fp);
+    std::fwrite(values.data(), sizeof(double), values.size(), fp);
     std::fwrite(path.c_str(), 1, path.size() + 1, fp);
   }
 }
 
 void FixLbmPore::restart(char* buf) {
-  // buf: the diagnostics (cumulative particle fluxes), then the checkpoint path.
-  std::memcpy(diagnostics_.data(), buf, sizeof(double) * kNumDiagnostics);
-  resume_checkpoint_ = std::string(buf + sizeof(double) * kNumDiagnostics);
+  restored_values_.resize(coupling::PoreMonitor::kCount);
+  std::memcpy(restored_values_.data(), buf, sizeof(double) * restored_values_.size());
+  resume_checkpoint_ = std::string(buf + sizeof(double) * restored_values_.size());
+  if (monitor_) monitor_->restore(restored_values_.data());
 }
 
-void FixLbmPore::grow_arrays(int nmax) {
-  memory->grow(loads_, nmax, kLoadsPerAtom, "lbm/pore:loads");
-  for (int i = nmax_; i < nmax; ++i)
-    for (int k = 0; k < kLoadsPerAtom; ++k) loads_[i][k] = 0.0;
-  nmax_ = nmax;
-}
+void FixLbmPore::grow_arrays(int nmax) { state_.resize(nmax); }
 
 // A new atom (fix insert/...) starts with no load and no previous position: its slot may
 // hold a former atom's values. Not every LIGGGHTS insertion calls set_arrays, so the slot
-// also records its atom's tag and own_slot() resets a slot whose tag differs.
+// also records its atom's tag and own_state() resets a slot whose tag differs.
 void FixLbmPore::set_arrays(int i) {
-  for (int k = 0; k < kLoadsPerAtom; ++k) loads_[i][k] = 0.0;
-  loads_[i][kTag] = atom->tag[i];
+  state_[i] = AtomCouplingState{};
+  state_[i].tag = atom->tag[i];
 }
 
-void FixLbmPore::own_slot(int i) {
-  if (loads_[i][kTag] != double(atom->tag[i])) set_arrays(i);
+AtomCouplingState& FixLbmPore::own_state(int i) {
+  if (state_[i].tag != double(atom->tag[i])) set_arrays(i);
+  return state_[i];
 }
 
-void FixLbmPore::copy_arrays(int i, int j, int) {
-  for (int k = 0; k < kLoadsPerAtom; ++k) loads_[j][k] = loads_[i][k];
-}
+void FixLbmPore::copy_arrays(int i, int j, int) { state_[j] = state_[i]; }
 
 int FixLbmPore::pack_exchange(int i, double* buf) {
-  for (int k = 0; k < kLoadsPerAtom; ++k) buf[k] = loads_[i][k];
-  return kLoadsPerAtom;
+  state_[i].pack(buf);
+  return AtomCouplingState::kDoubles;
 }
 
 int FixLbmPore::unpack_exchange(int nlocal, double* buf) {
-  for (int k = 0; k < kLoadsPerAtom; ++k) loads_[nlocal][k] = buf[k];
-  return kLoadsPerAtom;
+  state_[nlocal].unpack(buf);
+  return AtomCouplingState::kDoubles;
 }
 
 int FixLbmPore::pack_restart(int i, double* buf) {
-  buf[0] = kLoadsPerAtom + 1;
-  for (int k = 0; k < kLoadsPerAtom; ++k) buf[1 + k] = loads_[i][k];
-  return kLoadsPerAtom + 1;
+  buf[0] = AtomCouplingState::kDoubles + 1;
+  state_[i].pack(buf + 1);
+  return AtomCouplingState::kDoubles + 1;
 }
 
 void FixLbmPore::unpack_restart(int nlocal, int nth) {
   double** extra = atom->extra;
   int m = 0;
   for (int n = 0; n < nth; ++n) m += static_cast<int>(extra[nlocal][m]);
-  ++m;
-  for (int k = 0; k < kLoadsPerAtom; ++k) loads_[nlocal][k] = extra[nlocal][m++];
+  if (static_cast<int>(extra[nlocal][m]) != AtomCouplingState::kDoubles + 1)
+    error->one(FLERR, "fix lbm/pore: the restart file's per-atom data has another layout (written by "
+                      "another version of lbm-pore); restart from a file written by this one");
+  state_[nlocal].unpack(&extra[nlocal][m + 1]);
 }
 
-int FixLbmPore::size_restart(int) { return kLoadsPerAtom + 1; }
-int FixLbmPore::maxsize_restart() { return kLoadsPerAtom + 1; }
+int FixLbmPore::size_restart(int) { return AtomCouplingState::kDoubles + 1; }
+int FixLbmPore::maxsize_restart() { return AtomCouplingState::kDoubles + 1; }
 
 // Forward: the velocity the fluid sees and the angular velocity, owner -> ghosts.
 int FixLbmPore::pack_comm(int n, int* list, double* buf, int, int*) {
@@ -102,7 +100,7 @@ int FixLbmPore::pack_comm(int n, int* list, double* buf, int, int*) {
   int m = 0;
   for (int k = 0; k < n; ++k) {
     const int i = list[k];
-    for (int a = 0; a < 3; ++a) buf[m++] = loads_[i][kWallVelocity + a];
+    for (int a = 0; a < 3; ++a) buf[m++] = state_[i].fluid_velocity[a];
     for (int a = 0; a < 3; ++a) buf[m++] = omega ? omega[i][a] : 0.0;
   }
   return comm_forward;  // LIGGGHTS's Comm expects the count per atom, not the total
@@ -112,7 +110,7 @@ void FixLbmPore::unpack_comm(int n, int first, double* buf) {
   double** omega = atom->omega;
   int m = 0;
   for (int i = first; i < first + n; ++i) {
-    for (int a = 0; a < 3; ++a) loads_[i][kWallVelocity + a] = buf[m++];
+    for (int a = 0; a < 3; ++a) state_[i].fluid_velocity[a] = buf[m++];
     for (int a = 0; a < 3; ++a) {
       if (omega) omega[i][a] = buf[m];
       ++m;
@@ -121,15 +119,10 @@ void FixLbmPore::unpack_comm(int n, int first, double* buf) {
 }
 
 int FixLbmPore::pack_reverse_comm(int n, int first, double* buf) {
-  int m = 0;
-  for (int i = first; i < first + n; ++i)
-    for (int k = 0; k < kSummedPerAtom; ++k) buf[m++] = loads_[i][k];
-  return kSummedPerAtom;  // per atom, as LIGGGHTS's Comm expects
+  for (int i = first; i < first + n; ++i) state_[i].pack_summed(buf + AtomCouplingState::kSummed * (i - first));
+  return AtomCouplingState::kSummed;  // per atom, as LIGGGHTS's Comm expects
 }
 
 void FixLbmPore::unpack_reverse_comm(int n, int* list, double* buf) {
-  int m = 0;
-  for (int k = 0; k < n; ++k)
-    for (int q = 0; q < kSummedPerAtom; ++q) loads_[list[k]][q] += buf[m++];
+  for (int k = 0; k < n; ++k) state_[list[k]].add_summed(buf + AtomCouplingState::kSummed * k);
 }
-

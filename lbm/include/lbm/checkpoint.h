@@ -14,4 +14,10 @@ namespace lbm {
 void write_checkpoint(const FluidSolver& solver, const std::string& path);
 void read_checkpoint(FluidSolver& solver, const std::string& path);
 
+// After read_checkpoint: the checkpoint holds the node types of the step it was written at,
+// with zeros inside the particles, while a new mapping starts empty. Turns every moving node
+// into fluid at rest (equilibrium at rho = 1, u = 0), so the host maps the particles afresh;
+// written at a fluid step, the same nodes are covered again and the continuation is exact.
+void release_moving_nodes(FluidSolver& solver);
+
 }  // namespace lbm

@@ -26,6 +26,9 @@ struct PoreSceneRegions {
 // (non-positive lengths, pore wider than the box).
 void validate(const PoreSceneSpec& spec);
 PoreSceneRegions regions_of(const PoreSceneSpec& spec);
+// The pore of an arbitrary geometry along x: its narrowest open cross-section, as the
+// diameter of the circle of equal area, sqrt(4 A / pi) (cells).
+double narrowest_section_diameter(const VoxelGeometry& geometry);
 VoxelGeometry make_pore_scene(const PoreSceneSpec& spec, double spacing = 1.0,
                               std::array<double, 3> origin = {0.0, 0.0, 0.0});
 

@@ -6,6 +6,20 @@
 
 namespace lbm {
 
+// Limits of the weakly compressible scheme. Speeds: the scheme is accurate only well below
+// the lattice speed of sound c_s = 1/sqrt(3); a drive or a fluid faster than kMaxLatticeSpeed
+// is refused (drive) or stops the run (during it). Pressure drive: a density difference
+// between inlet and outlet above kMaxDensityDifference is far outside the weakly
+// compressible regime (the equation of state p = c_s^2 rho is linearised about rho0 = 1).
+constexpr double kSoundSpeed = 0.5773502691896258;
+constexpr double kMaxLatticeSpeed = 0.3;
+constexpr double kMaxDensityDifference = 0.1;
+
+// Empty when the drive is within the limits above; otherwise what exceeds which limit, in
+// lattice units ("0.35 in lattice units, above the stable limit 0.30 (lattice Mach 0.61)"),
+// for the host to prefix with its keyword and the value in the script's units.
+std::string drive_limit_violation(const FlowDrive& drive);
+
 // A fluid node whose state is not finite or whose speed exceeds a limit, found by
 // check_fluid_state(); `found` is false when every owned fluid node is fine.
 struct FluidStateProblem {

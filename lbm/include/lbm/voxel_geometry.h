@@ -20,6 +20,8 @@ class VoxelGeometry {
   const std::array<int, 3>& dims() const { return dims_; }
   double spacing() const { return spacing_; }
   const std::array<double, 3>& origin() const { return origin_; }
+  // Moves the geometry (a host places a file's voxels where its box is).
+  void place_at(const std::array<double, 3>& origin) { origin_ = origin; }
   std::size_t num_voxels() const { return solid_.size(); }
 
   bool inside(int i, int j, int k) const {

@@ -47,6 +47,12 @@ struct ParticleView {
   }
 };
 
+// Two particles by their index in a view, i owned, j any (owned or ghost), as a host's
+// neighbour list gives them: the pair kernels (lubrication, bonds) loop over such lists.
+struct ParticlePair {
+  int i = 0, j = 0;
+};
+
 // An owning particle list for tests and small drivers; view() exposes it.
 struct ParticleSet {
   std::size_t num_owned = 0;  // the rest are ghosts

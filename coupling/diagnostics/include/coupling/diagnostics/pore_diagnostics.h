@@ -29,6 +29,12 @@ struct PoreRegion {
 //     <= D/2 (the whole pore cross-section, "inside the pore radius").
 // V_dep = sum of 4/3 pi R^3 over deposited owned particles (summed over ranks with the
 // solver's communicator) and L_dep = V_dep / (pi D^2 / 4) (paper Sec. III).
+// Under a velocity drive the threshold is this fraction of the inlet velocity: deposited
+// particles are "at zero or very low velocity, such that moving flocks are not counted"
+// (paper Sec. III); flocks move with the flow, at or above the inlet velocity, while
+// particles in a clog creep far slower.
+constexpr double kDepositSpeedFraction = 0.1;
+
 struct DepositionCriteria {
   double speed_threshold = 1e-4;
 };

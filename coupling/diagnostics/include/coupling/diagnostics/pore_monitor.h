@@ -1,0 +1,86 @@
+#pragma once
+// All diagnostics of a clogging run (paper Sec. III) behind one object: the host calls it
+// once per fluid step with the particles and reads the values in its own units, which a
+// LIGGGHTS fix exposes as its global vector (f_ID[1..]). The fluid quantities need a scan of
+// the lattice, so they are computed only when read after the fluid changed.
+#include <vector>
+
+#include "coupling/diagnostics/pore_diagnostics.h"
+#include "coupling/particle_view.h"
+#include "coupling/unit_conversion.h"
+#include "lbm/fluid_solver.h"
+#include "lbm/pore_scene.h"
+
+namespace coupling {
+
+// Where the pore and the counting planes are, in lattice units.
+struct PoreMonitorSetup {
+  PoreRegion pore;              // deposits count inside it
+  double pore_diameter = 0.0;   // D for L_dep = V_dep / (pi D^2 / 4) (cells)
+  double inlet_plane = 0.0;     // x of the planes whose particle crossings are counted
+  double outlet_plane = 0.0;
+  int flow_length = 0;          // nodes along the flow axis (the counters' wrap-around test)
+  DepositionCriteria criteria;  // speed threshold of a deposit (lattice units)
+};
+
+// The paper's scene: "located inside the pore radius" (Sec. III) is the pore's cylinder,
+// extended upstream through the free region so a clog sitting in the pore's mouth counts
+// too; particles are counted where they leave the inlet region and enter the outlet region.
+PoreMonitorSetup pore_scene_monitor(const lbm::PoreSceneSpec& spec);
+// A geometry from a voxel file: deposits count anywhere in the lattice, D is the equivalent
+// diameter of the narrowest cross-section, the planes one node inside either end.
+PoreMonitorSetup voxel_geometry_monitor(const lbm::VoxelGeometry& geometry);
+
+class PoreMonitor {
+ public:
+  // Indices of the values (1-based in thermo: f_ID[i] = index i-1 here), host units.
+  enum Quantity {
+    kPressureLoss,        // p_in - p_out between the inlet and outlet planes (pressure units)
+    kFluidFluxInlet,      // volumetric flux through the inlet plane (volume / time)
+    kFluidFluxOutlet,     // ... and the outlet plane
+    kParticlesIn,         // particles that crossed the inlet plane downstream (cumulative)
+    kParticlesOut,        // particles that crossed the outlet plane (cumulative)
+    kDepositedVolume,     // V_dep (volume units)
+    kDepositedCount,      // number of deposited particles
+    kDepositedLength,     // L_dep = V_dep / (pi D^2 / 4)
+    kMaxFluidSpeed,       // largest fluid speed (velocity units)
+    kLatticeMach,         // largest speed / lattice speed of sound
+    kFluidSteps,          // fluid steps done
+    kParticlesInVolume,   // particle volume that crossed the inlet plane (cumulative)
+    kParticlesOutVolume,  // ... and the outlet plane
+    kHydroForceX,         // total hydrodynamic force on the group along the flow (force units)
+    kMaxParticleShift,    // largest particle displacement per fluid step, in cells
+    kCount
+  };
+
+  PoreMonitor(const PoreMonitorSetup& setup, const UnitConversion& units);
+
+  // At a fluid step: the particles (lattice view of the step), which of them are bonded
+  // (indexed like the view) and this rank's hydrodynamic force along the flow (host units).
+  // Collective over `comm`.
+  void record_particles(const ParticleView& view, const std::vector<char>& bonded,
+                        double local_force_x, const lbm::Communicator& comm);
+  // The largest particle shift of the step (cells, already reduced over ranks).
+  void record_particle_shift(double cells) { values_[kMaxParticleShift] = cells; }
+  // The fluid advanced: the fluid values are recomputed when next read.
+  void fluid_changed() { fluid_stale_ = true; }
+
+  // One value, recomputing the fluid ones if stale (collective: call on every rank).
+  double value(int quantity, const lbm::FluidSolver& solver, long long fluid_steps);
+  void update_fluid(const lbm::FluidSolver& solver, long long fluid_steps);
+
+  // The values as they are, for a restart file, and back (cumulative fluxes survive).
+  const std::vector<double>& values() const { return values_; }
+  void restore(const double* values);
+
+  const PoreMonitorSetup& setup() const { return setup_; }
+
+ private:
+  PoreMonitorSetup setup_;
+  const UnitConversion& units_;
+  PlaneCrossingCounter inlet_counter_, outlet_counter_;
+  std::vector<double> values_;
+  bool fluid_stale_ = true;
+};
+
+}  // namespace coupling
