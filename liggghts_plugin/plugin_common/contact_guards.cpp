@@ -39,7 +39,7 @@ void ContactGuards::check_time_step(const TimeStepFinding& found) {
   const bool dropped = dt_max < time_step_limit_ * (1.0 - 1e-9);
   time_step_limit_ = dt_max;
   if (update->dt > dt_max) {
-    // With a fluid, the fluid step n_dem * dt sets tau: keep it, take more DEM steps per fluid step.
+    // With a fluid, n_dem * dt sets tau: keep it, take more DEM steps per fluid step.
     const int factor = static_cast<int>(std::ceil(update->dt / dt_max));
     char fluid_advice[200] = "";
     if (modify->find_fix_style("lbm/pore", 0))
@@ -73,9 +73,12 @@ void ContactGuards::check_time_step(const TimeStepFinding& found) {
 
 bool ContactGuards::overlap_needs_report(double overlap_ratio) const {
   switch (contact::overlap_severity(overlap_ratio)) {
-    case contact::OverlapSeverity::kPassingThrough: return true;
-    case contact::OverlapSeverity::kTooSoft: return !overlap_warned_;
-    case contact::OverlapSeverity::kResolved: return false;
+    case contact::OverlapSeverity::kPassingThrough:
+      return true;
+    case contact::OverlapSeverity::kTooSoft:
+      return !overlap_warned_;
+    case contact::OverlapSeverity::kResolved:
+      return false;
   }
   return false;
 }
@@ -92,22 +95,24 @@ void ContactGuards::report_overlap(double overlap_ratio, const std::string& subj
   std::snprintf(figures, sizeof figures, stop ? " by %.0f %% of " : " by %.1f %% of ",
                 100.0 * overlap_ratio);
   std::string text = std::string(wording_.style) + ": " + subject + figures +
-                     wording_.overlap_reference + " at step " +
-                     std::to_string(update->ntimestep);
+                     wording_.overlap_reference + " at step " + std::to_string(update->ntimestep);
   if (stop) {
-    std::snprintf(figures, sizeof figures, " (limit %.0f %%): ", 100.0 * contact::kStopOverlapRatio);
+    std::snprintf(figures, sizeof figures,
+                  " (limit %.0f %%): ", 100.0 * contact::kStopOverlapRatio);
     text += figures + std::string(wording_.passing_through) + ". " + keyword +
             " is far too soft for the forces in this scene, or the timestep too large: raise " +
             keyword + " (the timestep limit t_c/10 shrinks with it), lower the drive";
     stop_on_this_rank(error, comm->me, screen, logfile, text.c_str());
   }
   overlap_warned_ = true;
-  std::snprintf(figures, sizeof figures, " (warning above %.0f %%, once per run): ",
-                100.0 * contact::kWarnOverlapRatio);
+  std::snprintf(figures, sizeof figures,
+                " (warning above %.0f %%, once per run): ", 100.0 * contact::kWarnOverlapRatio);
   text += figures + keyword + " is too soft for the forces in this scene; raise " + keyword +
           " (the timestep limit t_c/10 shrinks with it)";
-  if (screen) error->warning(FLERR, text.c_str());
-  else std::fprintf(stderr, "WARNING on proc %d: %s\n", comm->me, text.c_str());
+  if (screen)
+    error->warning(FLERR, text.c_str());
+  else
+    std::fprintf(stderr, "WARNING on proc %d: %s\n", comm->me, text.c_str());
 }
 
 }  // namespace lbm_pore

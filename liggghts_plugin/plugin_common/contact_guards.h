@@ -22,7 +22,7 @@ struct GuardWording {
   const char* contact = "";            // "contact time", "wall contact time"
   const char* lightest = "";           // "the lightest particles", "the lightest particle"
   const char* overlap_reference = "";  // overlap / R with R "the smaller radius", "its radius"
-  const char* passing_through = "";    // "they pass through each other", "it passes through the wall"
+  const char* passing_through = "";  // "they pass through each other", "it passes through the wall"
   const char* overlap_stiffness = "";  // the keyword to raise: "kn", "kw"
 };
 

@@ -6,8 +6,8 @@
 
 #include <cmath>
 
-#include "contact/pair_contact.h"
 #include "contact/coulomb_friction.h"
+#include "contact/pair_contact.h"
 
 using namespace contact;
 

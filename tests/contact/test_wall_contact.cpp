@@ -7,8 +7,8 @@
 using namespace contact;
 
 namespace {
-WallContactInput contact_input(Vec3 normal, double gap, double radius, double mass,
-                               Vec3 velocity, double dt) {
+WallContactInput contact_input(Vec3 normal, double gap, double radius, double mass, Vec3 velocity,
+                               double dt) {
   WallContactInput in;
   in.normal = normal;
   in.gap = gap;
@@ -22,7 +22,8 @@ WallContactInput contact_input(Vec3 normal, double gap, double radius, double ma
 
 TEST(WallContact, OverlapGivesDashDotRepulsion) {
   WallContactParams p;
-  const auto r = wall_contact_force(p, contact_input({0, 0, 1}, -0.01, 1.0, 2.0, {0, 0, -0.1}, 0.01));
+  const auto r =
+      wall_contact_force(p, contact_input({0, 0, 1}, -0.01, 1.0, 2.0, {0, 0, -0.1}, 0.01));
   const double k_q = 0.5 * std::sqrt(p.normal.k_n * 2.0);  // paper table, zeta = 0.25
   EXPECT_NEAR(r.force.z, 0.1 * 0.01 + k_q * 0.1, 1e-15);
   EXPECT_TRUE(r.active);
@@ -53,7 +54,8 @@ TEST(WallContact, OverlapIsExactlyTheDashDotForce) {
   WallContactParams p;
   p.normal = {0.37, 0.21};
   p.friction.mu = 0.0;  // the normal part alone
-  const auto r = wall_contact_force(p, contact_input({0, 0, 1}, -0.013, 1.3, 2.7, {0, 0, -0.07}, 0.01));
+  const auto r =
+      wall_contact_force(p, contact_input({0, 0, 1}, -0.013, 1.3, 2.7, {0, 0, -0.07}, 0.01));
   EXPECT_EQ(r.force.z, dash_dot_force(p.normal, {0.013, 0.07, 2.7}));
 }
 
@@ -62,7 +64,8 @@ TEST(WallContact, GapIsExactlyTheAdhesionForce) {
   p.adhesion.k_a = 0.7;
   p.friction.mu = 0.0;
   for (double gap : {0.0, 0.001, 0.017, 0.038}) {
-    const auto r = wall_contact_force(p, contact_input({0, 0, 1}, gap, 1.3, 2.7, {0, 0, 0.03}, 0.01));
+    const auto r =
+        wall_contact_force(p, contact_input({0, 0, 1}, gap, 1.3, 2.7, {0, 0, 0.03}, 0.01));
     EXPECT_EQ(r.force.z, -adhesion_force(p.adhesion, gap, 1.3)) << gap;
     EXPECT_TRUE(r.active) << gap;
   }

@@ -15,8 +15,8 @@ struct PairContactParams {
 };
 
 struct PairContactInput {
-  double gap = 0.0;        // h = |x_i - x_j| - (Ri + Rj); negative = overlap delta = -h
-  double gap_rate = 0.0;   // dh/dt (= -d(delta)/dt), negative while approaching
+  double gap = 0.0;       // h = |x_i - x_j| - (Ri + Rj); negative = overlap delta = -h
+  double gap_rate = 0.0;  // dh/dt (= -d(delta)/dt), negative while approaching
   double radius_i = 0.0, radius_j = 0.0;
   double effective_mass = 0.0;  // pair_effective_mass(mi, mj)
 };
