@@ -6,14 +6,15 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <optional>
 #include <string>
 
 #include "atom.h"
 #include "comm.h"
-#include "contact/dash_dot.h"
 #include "error.h"
 #include "fix.h"
 #include "force.h"
+#include "group.h"
 #include "memory.h"
 #include "modify.h"
 #include "neigh_list.h"
@@ -26,11 +27,14 @@
 using namespace LAMMPS_NS;
 
 namespace {
-// At least this many steps must resolve a contact (REFERENCES.md: dt <= t_c / 10).
-constexpr double kMinStepsPerContact = 10.0;
+constexpr const char* kStyle = "pair_style lbm/dashdot";
+
+// The words of this style's guard messages, in the order of lbm_pore::GuardWording.
+const lbm_pore::GuardWording kGuardWording{kStyle, "contact time", "the lightest particles",
+                                           "the smaller radius", "they pass through each other", "kn"};
 }  // namespace
 
-PairLbmDashdot::PairLbmDashdot(LAMMPS* lmp) : Pair(lmp) {
+PairLbmDashdot::PairLbmDashdot(LAMMPS* lmp) : Pair(lmp), guards_(lmp, kGuardWording) {
   single_enable = 0;
   restartinfo = 0;
 }
@@ -78,7 +82,7 @@ void PairLbmDashdot::parse_coefficients(int first, int narg, char** arg,
 
 void PairLbmDashdot::settings(int narg, char** arg) {
   defaults_ = contact::PairContactParams{};
-  parse_coefficients(0, narg, arg, defaults_, "pair_style lbm/dashdot");
+  parse_coefficients(0, narg, arg, defaults_, kStyle);
 }
 
 void PairLbmDashdot::coeff(int narg, char** arg) {
@@ -122,7 +126,7 @@ void PairLbmDashdot::init_style() {
 
   find_max_radius_per_type();
   check_time_step();
-  overlap_warned_ = false;  // the overlap warning comes once per run
+  guards_.start_run();
 }
 
 void PairLbmDashdot::find_max_radius_per_type() {
@@ -140,81 +144,25 @@ void PairLbmDashdot::find_max_radius_per_type() {
 }
 
 // The lightest pair of particles present has the shortest contact; refuse a step that
-// resolves it with fewer than kMinStepsPerContact steps (t_c of paper Eq. 1 with damping).
-// Called at init and whenever the global atom count changes (insertion), by every rank.
+// resolves it with too few steps (t_c of paper Eq. 1 with damping; the shortest over the
+// pair coefficients). Called at init and whenever the global atom count changes
+// (insertion), by every rank.
 void PairLbmDashdot::check_time_step() {
-  checked_natoms_ = atom->natoms;
-  double local_min_mass = 1e300;
-  for (int i = 0; i < atom->nlocal; ++i) local_min_mass = std::min(local_min_mass, atom->rmass[i]);
-  double min_mass = 0.0;
-  MPI_Allreduce(&local_min_mass, &min_mass, 1, MPI_DOUBLE, MPI_MIN, world);
-  if (min_mass >= 1e300) return;  // no particles yet
-  double worst_tc = 1e300;
-  contact::DashDotParams worst;
+  const std::optional<double> min_mass = guards_.lightest_mass(group->bitmask[group->find("all")]);
+  if (!min_mass) return;  // no particles yet
+  lbm_pore::TimeStepFinding found;
+  found.stiffness_name = "kn";
+  found.lightest_mass = *min_mass;
+  found.limit.contact_time = 1e300;
   for (int i = 1; i <= atom->ntypes; ++i)
     for (int j = i; j <= atom->ntypes; ++j) {
-      const double tc = contact::contact_duration(params_[i][j].normal, 0.5 * min_mass);
-      if (tc < worst_tc) { worst_tc = tc; worst = params_[i][j].normal; }
+      const contact::TimeStepLimit limit = contact::pair_time_step_limit(params_[i][j], *min_mass);
+      if (limit.contact_time < found.limit.contact_time) {
+        found.limit = limit;
+        found.stiffness = params_[i][j].normal.k_n;
+      }
     }
-  const double dt_max = worst_tc / kMinStepsPerContact;
-  dt_limit_ = dt_max;
-  if (update->dt > dt_max) {
-    // With a fluid, the fluid step n_dem * dt sets tau: keep it, take more DEM steps per fluid step.
-    char fluid_advice[200] = "";
-    if (modify->find_fix_style("lbm/pore", 0))
-      std::snprintf(fluid_advice, sizeof fluid_advice,
-                    "; with fix lbm/pore, multiply n_dem by %d and divide the timestep by %d "
-                    "(the fluid step stays the same)",
-                    static_cast<int>(std::ceil(update->dt / dt_max)),
-                    static_cast<int>(std::ceil(update->dt / dt_max)));
-    char message[700];
-    std::snprintf(message, sizeof message,
-                  "pair_style lbm/dashdot: timestep %g is too large for kn = %g at step " BIGINT_FORMAT
-                  ": the contact time of the lightest particles (mass %g) is t_c = %g, and a "
-                  "contact needs at least %g steps (timestep <= t_c/%g); use timestep <= %g or a "
-                  "smaller kn%s",
-                  update->dt, worst.k_n, update->ntimestep, min_mass, worst_tc,
-                  kMinStepsPerContact, kMinStepsPerContact, dt_max, fluid_advice);
-    error->all(FLERR, message);
-  }
-  // Expose the recommendation once, and again whenever lighter particles lower it.
-  if (comm->me == 0 && (reported_limit_ == 0.0 || dt_max < reported_limit_ * (1.0 - 1e-9))) {
-    char text[300];
-    std::snprintf(text, sizeof text,
-                  "pair_style lbm/dashdot: contact time t_c = %g of the lightest particles "
-                  "(mass %g, kn = %g); timestep limit t_c/%g = %g (timestep %g)\n",
-                  worst_tc, min_mass, worst.k_n, kMinStepsPerContact, dt_max, update->dt);
-    if (screen) std::fputs(text, screen);
-    if (logfile) std::fputs(text, logfile);
-  }
-  reported_limit_ = dt_max;
-}
-
-// Overlap guard: a contact law resolves overlaps of a few percent of the radius; beyond that
-// kn is too soft for the forces of the scene, and at half the radius the particles pass
-// through each other.
-void PairLbmDashdot::check_overlap(double ratio, int i, int j) {
-  const int* tag = atom->tag;
-  char text[600];
-  if (ratio > kStopOverlap) {
-    std::snprintf(text, sizeof text,
-                  "pair_style lbm/dashdot: particles %d and %d overlap by %.0f %% of the smaller "
-                  "radius at step " BIGINT_FORMAT " (limit %.0f %%): they pass through each other. "
-                  "kn is far too soft for the forces in this scene, or the timestep too large: "
-                  "raise kn (the timestep limit t_c/10 shrinks with it), lower the drive",
-                  tag[i], tag[j], 100.0 * ratio, update->ntimestep, 100.0 * kStopOverlap);
-    lbm_pore::stop_on_this_rank(error, comm->me, screen, logfile, text);
-  }
-  if (overlap_warned_) return;
-  overlap_warned_ = true;
-  std::snprintf(text, sizeof text,
-                "pair_style lbm/dashdot: particles %d and %d overlap by %.1f %% of the smaller "
-                "radius at step " BIGINT_FORMAT " (warning above %.0f %%, once per run): kn is too "
-                "soft for the forces in this scene; raise kn (the timestep limit t_c/10 shrinks "
-                "with it)",
-                tag[i], tag[j], 100.0 * ratio, update->ntimestep, 100.0 * kWarnOverlap);
-  if (screen) error->warning(FLERR, text);
-  else std::fprintf(stderr, "WARNING on proc %d: %s\n", comm->me, text);
+  guards_.check_time_step(found);
 }
 
 double PairLbmDashdot::init_one(int i, int j) {
@@ -230,9 +178,8 @@ void PairLbmDashdot::compute(int eflag, int vflag) {
   else evflag = vflag_fdotr = 0;
 
   // Particles inserted during the run (fix insert/..., fix pour) may be lighter than those
-  // checked at init. natoms is the same on every rank, so all ranks take this branch
-  // together; it costs one reduction per insertion, nothing on other steps.
-  if (atom->natoms != checked_natoms_) check_time_step();
+  // checked at init; all ranks take this branch together, one reduction per insertion.
+  if (guards_.atom_count_changed()) check_time_step();
 
   double** x = atom->x;
   double** v = atom->v;
@@ -283,7 +230,7 @@ void PairLbmDashdot::compute(int eflag, int vflag) {
                      dz * (v[i][2] - v[j][2])) * inv_r;
       in.radius_i = ri;
       in.radius_j = rj;
-      in.effective_mass = rmass[i] * rmass[j] / (rmass[i] + rmass[j]);
+      in.effective_mass = contact::pair_effective_mass(rmass[i], rmass[j]);
       const double fpair = contact::pair_normal_force(params, in) * inv_r;
       if (in.gap < 0.0) {
         const double ratio = -in.gap / std::min(ri, rj);
@@ -313,14 +260,20 @@ void PairLbmDashdot::compute(int eflag, int vflag) {
   }
   bond_count_local_ = bonds;
   max_overlap_ratio_ = worst_overlap;
-  if (worst_overlap > kWarnOverlap) check_overlap(worst_overlap, worst_i, worst_j);
+  if (guards_.overlap_needs_report(worst_overlap)) {
+    char subject[100];
+    std::snprintf(subject, sizeof subject, "particles %d and %d overlap", atom->tag[worst_i],
+                  atom->tag[worst_j]);
+    guards_.report_overlap(worst_overlap, subject);
+  }
   if (vflag_fdotr) virial_fdotr_compute();
 }
 
 void* PairLbmDashdot::extract(const char* name, int& dim) {
   dim = 0;
   if (std::strcmp(name, "bonds") == 0) return &bond_count_local_;
-  if (std::strcmp(name, "dt_max") == 0) return &dt_limit_;  // t_c / 10 (0: no particles yet)
+  // t_c / 10 (0: no particles yet); callers only read it.
+  if (std::strcmp(name, "dt_max") == 0) return const_cast<double*>(&guards_.time_step_limit());
   if (std::strcmp(name, "max_overlap_ratio") == 0) return &max_overlap_ratio_;  // this rank, last step
   return nullptr;
 }

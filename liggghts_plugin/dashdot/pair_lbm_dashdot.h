@@ -8,16 +8,18 @@
 // when they are pulled further apart; the current count is extract("bonds") and
 // `compute lbm/bonds`. The force law itself is contact::pair_normal_force (coupling/contact).
 //
-// Stability guards (doc/stability.md): the time step against the contact time of the
-// lightest particles, re-checked whenever the global atom count changes (insertion); the
-// largest overlap per step (warning above 5 % of the smaller radius, stop above 50 %); NaN in
-// a position or a pair force stops the run with the atom ID and the step.
+// Stability guards (doc/stability.md; lbm_pore::ContactGuards, shared with fix wall/voxel):
+// the time step against the contact time of the lightest particles, re-checked whenever the
+// global atom count changes (insertion); the largest overlap per step (warning above 5 % of
+// the smaller radius, stop above 50 %); NaN in a position or a pair force stops the run with
+// the atom ID and the step.
 #include <vector>
 
 #include "lmptype.h"
 
 #include "contact/pair_contact.h"
 #include "pair.h"
+#include "plugin_common/contact_guards.h"
 
 namespace LAMMPS_NS {
 
@@ -37,10 +39,6 @@ class PairLbmDashdot : public Pair {
   // under newton off); compute lbm/bonds sums them over ranks.
   double local_bond_count() const { return bond_count_local_; }
 
-  // Overlap/R above which the style warns (once per run) and stops the run.
-  static constexpr double kWarnOverlap = 0.05;
-  static constexpr double kStopOverlap = 0.5;
-
  private:
   void allocate();
   // Parses "kn v kc v damping v" from arg[first..narg) into params; names the keyword on error.
@@ -49,19 +47,14 @@ class PairLbmDashdot : public Pair {
   void find_max_radius_per_type();
   // Collective: recomputes the limit from the lightest particle present; error->all above it.
   void check_time_step();
-  // Per-step guards of compute(): overlap warning/stop and NaN, on the rank that found them.
-  void check_overlap(double ratio, int i, int j);
 
   contact::PairContactParams defaults_;
   std::vector<std::vector<contact::PairContactParams>> params_;  // [type][type], 1-based
   std::vector<double> max_radius_;                                // [type]
   double distance_factor_ = 1.0;  // neighbour cutoff = (Ri + Rj) * factor (+ skin)
   double bond_count_local_ = 0.0;
-  bigint checked_natoms_ = -1;   // atom->natoms at the last time step check
-  double dt_limit_ = 0.0;        // t_c / 10 of the lightest particles (0: none yet); extract("dt_max")
-  double reported_limit_ = 0.0;  // the limit last printed (printed again when it drops)
+  lbm_pore::ContactGuards guards_;  // t_c / 10 of the lightest particles is extract("dt_max")
   double max_overlap_ratio_ = 0.0;  // largest overlap / smaller radius of the last step, this rank
-  bool overlap_warned_ = false;     // once per run
 };
 
 }  // namespace LAMMPS_NS

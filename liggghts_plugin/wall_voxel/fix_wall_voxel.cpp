@@ -6,11 +6,11 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <optional>
 #include <string>
 
 #include "atom.h"
 #include "comm.h"
-#include "contact/dash_dot.h"
 #include "error.h"
 #include "modify.h"
 #include "lbm/input_error.h"
@@ -26,14 +26,18 @@ using lbm_pore::parse_number;
 
 namespace {
 constexpr const char* kCommand = "fix wall/voxel";
-constexpr double kMinStepsPerContact = 10.0;  // dt <= t_c / 10 (REFERENCES.md)
 constexpr double kBig = 1e300;
 // Contacts of consecutive steps are the same contact when their normals are this close
 // (cos 25 deg): a sphere rolling over an edge turns its normal slowly.
 constexpr double kSameContactCosine = 0.9;
+
+// The words of this style's guard messages, in the order of lbm_pore::GuardWording.
+const lbm_pore::GuardWording kGuardWording{kCommand, "wall contact time", "the lightest particle",
+                                           "its radius", "it passes through the wall", "kw"};
 }  // namespace
 
-FixWallVoxel::FixWallVoxel(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg, arg) {
+FixWallVoxel::FixWallVoxel(LAMMPS* lmp, int narg, char** arg)
+    : Fix(lmp, narg, arg), guards_(lmp, kGuardWording) {
   lbm_pore::WallGeometrySource source;
   std::shared_ptr<const lbm::VoxelGeometry> shared;  // from 'lbm <fix-ID>'
   int iarg = 3;
@@ -89,8 +93,8 @@ FixWallVoxel::FixWallVoxel(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg, a
   if (!shared && source.kind == lbm_pore::WallGeometrySource::Kind::kNone)
     error->all(FLERR, "fix wall/voxel: no geometry: give keyword 'lbm <fix-ID>' (the geometry of "
                       "fix lbm/pore), 'file <path>' or 'pore'");
-  // Defaults tied to the wall stiffness unless given (LIGGGHTS hooke's k_t = 2/7 k_n).
-  if (!kt_given_) params_.friction.k_t = 2.0 / 7.0 * params_.normal.k_n;
+  // Defaults tied to the wall stiffness and damping unless given.
+  if (!kt_given_) params_.friction.k_t = contact::default_tangential_stiffness(params_.normal.k_n);
   if (!tangential_damping_given_) params_.friction.damping_ratio = params_.normal.damping_ratio;
 
   try {
@@ -169,57 +173,19 @@ void FixWallVoxel::init() {
   if (!atom->radius_flag || !atom->rmass_flag)
     error->all(FLERR, "fix wall/voxel needs per-atom radius and mass (atom_style granular or sphere)");
   check_time_step();
-  overlap_warned_ = false;  // the overlap warning comes once per run
+  guards_.start_run();
 }
 
 // Called at init and whenever the global atom count changes (insertion), by every rank.
 void FixWallVoxel::check_time_step() {
-  checked_natoms_ = atom->natoms;
-  double local_min_mass = kBig;
-  for (int i = 0; i < atom->nlocal; ++i)
-    if (atom->mask[i] & groupbit) local_min_mass = std::min(local_min_mass, atom->rmass[i]);
-  double min_mass = 0.0;
-  MPI_Allreduce(&local_min_mass, &min_mass, 1, MPI_DOUBLE, MPI_MIN, world);
-  if (min_mass >= kBig) return;  // no particles yet
-  // The stiffer of the normal and tangential springs sets the shortest oscillation.
-  contact::DashDotParams stiffest = params_.normal;
-  stiffest.k_n = std::max(params_.normal.k_n, params_.friction.k_t);
-  const double tc = contact::contact_duration(stiffest, min_mass);
-  const double dt_max = tc / kMinStepsPerContact;
-  const bool was_unset = dt_limit_ == 0.0;
-  const bool dropped = dt_max < dt_limit_ * (1.0 - 1e-9);
-  dt_limit_ = dt_max;
-  if (update->dt > dt_max) {
-    // With a fluid, the fluid step n_dem * dt sets tau: keep it, take more DEM steps per fluid step.
-    const int factor = static_cast<int>(std::ceil(update->dt / dt_max));
-    char fluid_advice[200] = "";
-    if (modify->find_fix_style("lbm/pore", 0))
-      std::snprintf(fluid_advice, sizeof fluid_advice,
-                    "; with fix lbm/pore, multiply n_dem by %d and divide the timestep by %d "
-                    "(the fluid step stays the same)",
-                    factor, factor);
-    const bool kt_sets = params_.friction.k_t > params_.normal.k_n;
-    char message[700];
-    std::snprintf(message, sizeof message,
-                  "fix wall/voxel: timestep %g is too large for %s = %g at step " BIGINT_FORMAT
-                  ": the wall contact time of the lightest particle (mass %g) is t_c = %g, and "
-                  "a contact needs at least %g steps (timestep <= t_c/%g); use timestep <= %g or a "
-                  "smaller %s%s",
-                  update->dt, kt_sets ? "kt" : "kw", stiffest.k_n, update->ntimestep, min_mass, tc,
-                  kMinStepsPerContact, kMinStepsPerContact, dt_max, kt_sets ? "kt" : "kw",
-                  fluid_advice);
-    error->all(FLERR, message);
-  }
-  if (comm->me == 0 && (was_unset || dropped)) {
-    char text[300];
-    std::snprintf(text, sizeof text,
-                  "fix wall/voxel: wall contact time t_c = %g of the lightest particle (mass %g, "
-                  "%s = %g); timestep limit t_c/%g = %g (timestep %g)\n",
-                  tc, min_mass, params_.friction.k_t > params_.normal.k_n ? "kt" : "kw",
-                  stiffest.k_n, kMinStepsPerContact, dt_max, update->dt);
-    if (screen) std::fputs(text, screen);
-    if (logfile) std::fputs(text, logfile);
-  }
+  const std::optional<double> min_mass = guards_.lightest_mass(groupbit);
+  if (!min_mass) return;  // no particles yet
+  lbm_pore::TimeStepFinding found;
+  found.stiffness_name = contact::wall_tangential_spring_is_stiffer(params_) ? "kt" : "kw";
+  found.stiffness = contact::wall_stiffest_spring(params_).k_n;
+  found.lightest_mass = *min_mass;
+  found.limit = contact::wall_time_step_limit(params_, *min_mass);
+  guards_.check_time_step(found);
 }
 
 void FixWallVoxel::stop_on_non_finite(int i, const char* what) {
@@ -231,35 +197,6 @@ void FixWallVoxel::stop_on_non_finite(int i, const char* what) {
                 atom->tag[i], what, update->ntimestep, atom->x[i][0], atom->x[i][1], atom->x[i][2],
                 atom->f[i][0], atom->f[i][1], atom->f[i][2]);
   lbm_pore::stop_on_this_rank(error, comm->me, screen, logfile, text);
-}
-
-// Overlap guard: beyond a few percent of R kw is too soft for the forces of the scene; at
-// half the radius the particle is passing through the wall.
-void FixWallVoxel::check_overlap(double ratio, int i) {
-  const int tag = atom->tag[i];
-  double** x = atom->x;
-  char text[600];
-  if (ratio > kStopOverlap) {
-    std::snprintf(text, sizeof text,
-                  "fix wall/voxel: particle %d at (%g %g %g) overlaps the wall by %.0f %% of its "
-                  "radius at step " BIGINT_FORMAT " (limit %.0f %%): it passes through the wall. kw "
-                  "is far too soft for the forces in this scene, or the timestep too large: raise "
-                  "kw (the timestep limit t_c/10 shrinks with it), lower the drive",
-                  tag, x[i][0], x[i][1], x[i][2], 100.0 * ratio, update->ntimestep,
-                  100.0 * kStopOverlap);
-    lbm_pore::stop_on_this_rank(error, comm->me, screen, logfile, text);
-  }
-  if (overlap_warned_) return;
-  overlap_warned_ = true;
-  std::snprintf(text, sizeof text,
-                "fix wall/voxel: particle %d at (%g %g %g) overlaps the wall by %.1f %% of its "
-                "radius at step " BIGINT_FORMAT " (warning above %.0f %%, once per run): kw is too "
-                "soft for the forces in this scene; raise kw (the timestep limit t_c/10 shrinks "
-                "with it)",
-                tag, x[i][0], x[i][1], x[i][2], 100.0 * ratio, update->ntimestep,
-                100.0 * kWarnOverlap);
-  if (screen) error->warning(FLERR, text);
-  else std::fprintf(stderr, "WARNING on proc %d: %s\n", comm->me, text);
 }
 
 void FixWallVoxel::setup(int vflag) { post_force(vflag); }
@@ -275,9 +212,9 @@ void FixWallVoxel::post_force(int /*vflag*/) {
   const double dt = update->dt;
   std::fill(local_stats_, local_stats_ + 5, 0.0);
   stats_reduced_ = false;
-  // Particles inserted during the run may be lighter than those checked at init; natoms is
-  // the same on every rank, so all take this branch together (one reduction per insertion).
-  if (atom->natoms != checked_natoms_) check_time_step();
+  // Particles inserted during the run may be lighter than those checked at init; all ranks
+  // take this branch together, one reduction per insertion.
+  if (guards_.atom_count_changed()) check_time_step();
   double worst_overlap = 0.0;
   int worst_i = -1;
 
@@ -345,11 +282,16 @@ void FixWallVoxel::post_force(int /*vflag*/) {
     local_stats_[3] += total.z;
   }
   local_stats_[4] = worst_overlap;
-  if (worst_overlap > kWarnOverlap) check_overlap(worst_overlap, worst_i);
+  if (guards_.overlap_needs_report(worst_overlap)) {
+    char subject[200];
+    std::snprintf(subject, sizeof subject, "particle %d at (%g %g %g) overlaps the wall",
+                  atom->tag[worst_i], x[worst_i][0], x[worst_i][1], x[worst_i][2]);
+    guards_.report_overlap(worst_overlap, subject);
+  }
 }
 
 double FixWallVoxel::compute_vector(int index) {
-  if (index == 4) return dt_limit_;
+  if (index == 4) return guards_.time_step_limit();
   if (!stats_reduced_) {
     MPI_Allreduce(local_stats_, global_stats_, 4, MPI_DOUBLE, MPI_SUM, world);
     MPI_Allreduce(&local_stats_[4], &global_stats_[4], 1, MPI_DOUBLE, MPI_MAX, world);

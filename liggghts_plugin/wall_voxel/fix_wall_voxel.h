@@ -10,8 +10,8 @@
 // torque. Global vector: [1] active contacts, [2..4] total wall force on the group,
 // [5] timestep limit t_c/10 of the lightest particle, [6] largest overlap/R of the last step.
 //
-// Stability guards (doc/stability.md): the time step against the wall contact time of the
-// lightest particle, re-checked whenever the global atom count changes (insertion); the
+// Stability guards (doc/stability.md; lbm_pore::ContactGuards, shared with pair_style
+// lbm/dashdot): the time step against the wall contact time of the lightest particle, re-checked whenever the global atom count changes (insertion); the
 // largest overlap per step (warning above 5 % of R, stop above 50 %); NaN in a position or
 // force stops the run with the atom ID and the step.
 #include <memory>
@@ -22,6 +22,7 @@
 #include "fix.h"
 #include "lbm/voxel_geometry.h"
 #include "lmptype.h"
+#include "plugin_common/contact_guards.h"
 
 namespace LAMMPS_NS {
 
@@ -48,16 +49,12 @@ class FixWallVoxel : public Fix {
   // Contacts remembered per atom (a box corner has 3; staircases of a voxelised curve a few).
   static constexpr int kMaxContacts = 6;
   static constexpr int kHistoryPerContact = 6;  // normal (3), tangential spring (3)
-  // Overlap/R above which the fix warns (once per run) and stops the run.
-  static constexpr double kWarnOverlap = 0.05;
-  static constexpr double kStopOverlap = 0.5;
 
  private:
   void parse_contact_keyword(int& iarg, int narg, char** arg);
   std::shared_ptr<const lbm::VoxelGeometry> geometry_of_lbm_fix(const char* fix_id);
   // Collective: recomputes the limit from the lightest particle in the group; error->all above it.
   void check_time_step();
-  void check_overlap(double ratio, int i);
   void stop_on_non_finite(int i, const char* what);
 
   std::shared_ptr<const lbm::VoxelGeometry> geometry_;
@@ -68,9 +65,7 @@ class FixWallVoxel : public Fix {
   std::vector<contact::SurfacePoint> points_;  // scratch, reused
   double local_stats_[5] = {0, 0, 0, 0, 0};   // contacts, force (3), largest overlap/R
   double global_stats_[5] = {0, 0, 0, 0, 0};
-  bigint checked_natoms_ = -1;   // atom->natoms at the last time step check
-  double dt_limit_ = 0.0;        // t_c / 10 of the lightest particle (0: none yet)
-  bool overlap_warned_ = false;  // once per run
+  lbm_pore::ContactGuards guards_;  // t_c / 10 of the lightest particle is f_ID[5]
   bool stats_reduced_ = false;
 };
 

@@ -1,6 +1,6 @@
 #include "contact/coulomb_friction.h"
 
-#include <cmath>
+#include "contact/dash_dot.h"
 
 namespace contact {
 
@@ -15,7 +15,9 @@ FrictionResult coulomb_friction(const FrictionParams& params, const FrictionInpu
   const Vec3 slip_velocity = tangential_part(in.relative_velocity, in.normal);
   spring += in.dt * slip_velocity;
 
-  const double gamma_t = 2.0 * params.damping_ratio * std::sqrt(params.k_t * in.effective_mass);
+  // The dashpot of the tangential oscillator, damped like the normal one (dash_dot.h).
+  const double gamma_t =
+      damping_coefficient(DashDotParams{params.k_t, params.damping_ratio}, in.effective_mass);
   Vec3 force = -params.k_t * spring - gamma_t * slip_velocity;
   const double limit = params.mu * in.normal_force;
   const double magnitude = norm(force);

@@ -8,16 +8,6 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 }
 
-double damping_coefficient(const DashDotParams& params, double effective_mass) {
-  return 2.0 * params.damping_ratio * std::sqrt(params.k_n * effective_mass);
-}
-
-double dash_dot_force(const DashDotParams& params, const NormalContactInput& in) {
-  if (in.overlap <= 0.0) return 0.0;
-  return params.k_n * in.overlap +
-         damping_coefficient(params, in.effective_mass) * in.overlap_rate;
-}
-
 double restitution_coefficient(double damping_ratio) {
   if (damping_ratio >= 1.0) return 0.0;  // over-damped: no rebound
   return std::exp(-kPi * damping_ratio / std::sqrt(1.0 - damping_ratio * damping_ratio));

@@ -1,6 +1,18 @@
 #include "contact/wall_contact.h"
 
+#include <algorithm>
+
 namespace contact {
+
+DashDotParams wall_stiffest_spring(const WallContactParams& params) {
+  DashDotParams stiffest = params.normal;
+  stiffest.k_n = std::max(params.normal.k_n, params.friction.k_t);
+  return stiffest;
+}
+
+TimeStepLimit wall_time_step_limit(const WallContactParams& params, double mass) {
+  return time_step_limit(wall_stiffest_spring(params), mass);
+}
 
 WallContactResult wall_contact_force(const WallContactParams& params, const WallContactInput& in) {
   WallContactResult out;

@@ -17,9 +17,12 @@
 
 namespace contact {
 
+// The tangential stiffness when none is given: 2/7 of the normal one, as LIGGGHTS hooke.
+inline double default_tangential_stiffness(double k_n) { return 2.0 / 7.0 * k_n; }
+
 struct FrictionParams {
   double mu = 0.1;              // paper table
-  double k_t = 0.1 * 2.0 / 7.0;  // tangential stiffness; default 2/7 k_w like LIGGGHTS hooke
+  double k_t = default_tangential_stiffness(0.1);  // of the paper's k_w = 0.1
   double damping_ratio = 0.25;  // of the tangential oscillator, as for the normal one
 };
 

@@ -11,6 +11,9 @@
 // The force is not clipped at zero while the particles separate: the analytic restitution
 // e = exp(-pi zeta / sqrt(1 - zeta^2)) holds for exactly this unclipped linear law, and the
 // small attraction at the end of a contact is what the paper's Eq. (1) gives.
+//
+// The force functions are inline: they run in the pair style's and the wall fix's inner loops.
+#include <cmath>
 
 namespace contact {
 
@@ -25,11 +28,19 @@ struct NormalContactInput {
   double effective_mass = 0.0;  // mi mj/(mi+mj) for two particles, m_i against a wall
 };
 
-// Critical damping 2 sqrt(k m_eff) times zeta.
-double damping_coefficient(const DashDotParams& params, double effective_mass);
+// Critical damping 2 sqrt(k m_eff) times zeta: k_d of the pair, k_q of the wall (paper table),
+// and the tangential dashpot of the friction spring (with k_t in place of k_n).
+inline double damping_coefficient(const DashDotParams& params, double effective_mass) {
+  return 2.0 * params.damping_ratio * std::sqrt(params.k_n * effective_mass);
+}
 
-// Repulsive positive. Zero when delta <= 0 (no contact).
-double dash_dot_force(const DashDotParams& params, const NormalContactInput& in);
+// Paper Eq. (1), F_n = k_n delta + k_d delta_dot; repulsive positive. Zero when delta <= 0
+// (no contact).
+inline double dash_dot_force(const DashDotParams& params, const NormalContactInput& in) {
+  if (in.overlap <= 0.0) return 0.0;
+  return params.k_n * in.overlap +
+         damping_coefficient(params, in.effective_mass) * in.overlap_rate;
+}
 
 // Analytic figures of the linear contact (see REFERENCES.md, "Spring-dashpot"):
 double restitution_coefficient(double damping_ratio);               // e(zeta)

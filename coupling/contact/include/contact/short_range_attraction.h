@@ -25,12 +25,30 @@ struct AdhesionParams {
   double range_factor = kAttractionRangeFactor;
 };
 
-double cohesion_range(const CohesionParams& params, double radius_i, double radius_j);
-double cohesion_force(const CohesionParams& params, double gap, double radius_i, double radius_j);
-double max_cohesion_force(const CohesionParams& params, double radius_i, double radius_j);
+// Inline: the pair style's and the wall fix's inner loops call them.
+inline double cohesion_range(const CohesionParams& params, double radius_i, double radius_j) {
+  return params.range_factor * (radius_i + radius_j);
+}
 
-double adhesion_range(const AdhesionParams& params, double radius);
-double adhesion_force(const AdhesionParams& params, double gap, double radius);
+// F_c = h k_c a* with the reduced radius a* = RiRj/(Ri+Rj), in that order of operations (the
+// order pair_style lbm/dashdot has always used, so its results stay bit-identical).
+inline double cohesion_force(const CohesionParams& params, double gap, double radius_i,
+                             double radius_j) {
+  if (gap < 0.0 || gap > cohesion_range(params, radius_i, radius_j)) return 0.0;
+  const double reduced_radius = radius_i * radius_j / (radius_i + radius_j);
+  return gap * params.k_c * reduced_radius;
+}
+
+inline double adhesion_range(const AdhesionParams& params, double radius) {
+  return params.range_factor * radius;
+}
+
+inline double adhesion_force(const AdhesionParams& params, double gap, double radius) {
+  if (gap < 0.0 || gap > adhesion_range(params, radius)) return 0.0;
+  return gap * params.k_a * radius;
+}
+
+double max_cohesion_force(const CohesionParams& params, double radius_i, double radius_j);
 double max_adhesion_force(const AdhesionParams& params, double radius);
 
 }  // namespace contact

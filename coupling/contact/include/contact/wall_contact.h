@@ -3,11 +3,17 @@
 // surface point, dash-dot repulsion with the wall stiffness k_w and damping k_q while
 // overlapping (Eq. 1), adhesion F_a = h k_a R_i while the gap is within 0.03 R_i (Eq. 4),
 // and Coulomb friction capped at mu N (Eq. 5). The wall is static and infinitely heavy, so
-// the effective mass is the particle's. The total wall force is the sum over the surface
-// points of voxel_surface.h (Eq. 6), which merges the voxels into faces, edges and corners.
+// the effective mass is the particle's. The normal law is the pair contact's (pair_contact.h:
+// the same dash_dot_force), with adhesion where the pair has cohesion.
+//
+// One call is one contact: its input struct carries the contact's own friction spring and
+// its result the spring to keep, so any wall model can sum contacts. fix wall/voxel sums over
+// the surface points of voxel_surface.h (Eq. 6), which merges the voxels into faces, edges
+// and corners; the paper's voxel sum would call it once per solid voxel in reach.
 #include "contact/coulomb_friction.h"
 #include "contact/dash_dot.h"
 #include "contact/short_range_attraction.h"
+#include "contact/stability_limits.h"
 #include "contact/vec3.h"
 
 namespace contact {
@@ -37,9 +43,22 @@ struct WallContactResult {
 
 WallContactResult wall_contact_force(const WallContactParams& params, const WallContactInput& in);
 
-// Reach of the wall force beyond the particle surface (the adhesion range).
+// Reach of the wall force from the particle centre: the radius plus the adhesion range.
 inline double wall_contact_reach(const WallContactParams& params, double radius) {
   return radius + adhesion_range(params.adhesion, radius);
 }
+
+// The stiffer of the normal (k_w) and tangential (k_t) springs sets the shortest oscillation
+// of a wall contact, so the time step limit; true when it is the tangential one.
+inline bool wall_tangential_spring_is_stiffer(const WallContactParams& params) {
+  return params.friction.k_t > params.normal.k_n;
+}
+
+// The normal spring with the stiffer of k_w and k_t, and the normal damping ratio.
+DashDotParams wall_stiffest_spring(const WallContactParams& params);
+
+// The time step limit of a wall contact of a particle of this mass (m_eff = m: the wall does
+// not move).
+TimeStepLimit wall_time_step_limit(const WallContactParams& params, double mass);
 
 }  // namespace contact
