@@ -19,21 +19,18 @@
 #include "lbm/checkpoint.h"
 #include "lbm/fluid_solver.h"
 #include "lbm/input_error.h"
-#include "lbm/pore_scene.h"
 #include "lbm/stability.h"
-#include "lbm/voxel_file.h"
 #include "lbm/vtk_output.h"
 #include "modify.h"
 #include "neigh_list.h"
 #include "neigh_request.h"
+#include "pore_scene_setup.h"
 #include "neighbor.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;
 
 namespace {
-int cells(double length, double dx) { return static_cast<int>(std::lround(length / dx)); }
-
 // Wraps a coupling/ or lbm/ error into LIGGGHTS's, naming the command once.
 std::string fix_message(const std::string& what) {
   return what.rfind("fix lbm/pore", 0) == 0 ? what : "fix lbm/pore: " + what;
@@ -156,29 +153,9 @@ void FixLbmPore::find_gravity() {
 }
 
 void FixLbmPore::build_geometry() {
-  const double dx = options_.dx;
-  std::array<double, 3> origin;
-  for (int a = 0; a < 3; ++a)
-    origin[a] = options_.origin_given ? options_.origin[a] : domain->boxlo[a] + 0.5 * dx;
-  if (options_.scene == lbm_pore::PoreOptions::Scene::kPore) {
-    lbm::PoreSceneSpec spec;
-    spec.inlet_length = cells(options_.inlet_length, dx);
-    spec.free_length = cells(options_.free_length, dx);
-    spec.pore_length = cells(options_.pore_length, dx);
-    spec.outlet_length = cells(options_.outlet_length, dx);
-    spec.width = cells(options_.width, dx);
-    spec.pore_diameter = options_.pore_diameter / dx;
-    geometry_ = std::make_shared<lbm::VoxelGeometry>(lbm::make_pore_scene(spec, dx, origin));
-    monitor_setup_ = coupling::pore_scene_monitor(spec);
-  } else {
-    auto file = std::make_shared<lbm::VoxelGeometry>(lbm::load_voxel_file(options_.voxel_file));
-    if (std::abs(file->spacing() - dx) > 1e-9 * dx)
-      throw lbm::InputError("scene voxels: the file's spacing " + std::to_string(file->spacing()) +
-                            " differs from dx " + std::to_string(dx));
-    file->place_at(origin);  // where the box (or 'origin') says; the file's own is ignored
-    geometry_ = file;
-    monitor_setup_ = coupling::voxel_geometry_monitor(*geometry_);
-  }
+  auto scene = lbm_pore::build_scene(options_, domain->boxlo);
+  geometry_ = scene.geometry;
+  monitor_setup_ = scene.monitor;
   surface_ = std::make_unique<contact::VoxelSurface>(*geometry_);
 }
 
@@ -190,74 +167,16 @@ void FixLbmPore::build_lattice() {
   frame_->dx = dx;
   frame_->dims = geometry_->dims();
   frame_->origin = geometry_->origin();
-  // The lattice must fill the simulation box: every node's cell inside it.
-  for (int a = 0; a < 3; ++a) {
-    const double lattice_lo = frame_->origin[a] - 0.5 * dx;
-    const double lattice_hi = lattice_lo + frame_->dims[a] * dx;
-    if (std::abs(lattice_lo - domain->boxlo[a]) > 0.5 * dx ||
-        std::abs(lattice_hi - domain->boxhi[a]) > 0.5 * dx) {
-      char text[400];
-      std::snprintf(text, sizeof text,
-                    "scene: the lattice spans [%g, %g] on axis %c but the simulation box is "
-                    "[%g, %g]; make the box match the scene (dims %d x %d x %d cells of dx = %g) "
-                    "or set 'origin'",
-                    lattice_lo, lattice_hi, "xyz"[a], domain->boxlo[a], domain->boxhi[a],
-                    frame_->dims[0], frame_->dims[1], frame_->dims[2], dx);
-      throw lbm::InputError(text);
-    }
-  }
-  for (int a = 1; a < 3; ++a)
-    if (options_.lateral_periodic != (domain->periodicity[a] != 0))
-      throw lbm::InputError(std::string("lateral: the fluid is ") +
-                            (options_.lateral_periodic ? "periodic" : "walled") + " along " +
-                            "xyz"[a] + " but the LIGGGHTS boundary there is " +
-                            (domain->periodicity[a] ? "periodic" : "not periodic") +
-                            "; use 'boundary f p p' with 'lateral periodic' or 'boundary f f f' "
-                            "with 'lateral wall'");
-  if (domain->periodicity[0])
-    throw lbm::InputError("the flow axis x must not be periodic: use 'boundary f ...' (the "
-                          "fluid enters at x-lo and leaves at x-hi)");
-
+  frame_->check_fills_box(domain->boxlo, domain->boxhi);
+  lbm_pore::check_boundaries(options_, domain->periodicity);
   lbm::FluidParameters p;
   p.tau = units_->tau();
   p.magic = options_.magic;
   p.periodic = {false, options_.lateral_periodic, options_.lateral_periodic};
-  lbm::FlowDrive drive;
-  drive.axis = 0;
-  const bool by_velocity = options_.drive == lbm_pore::PoreOptions::Drive::kVelocity;
-  drive.kind = by_velocity ? lbm::FlowDrive::kInletVelocity : lbm::FlowDrive::kPressureLoss;
-  drive.inlet_velocity = by_velocity ? units_->velocity_to_lattice(options_.drive_value) : 0.0;
-  drive.pressure_loss = by_velocity ? 0.0 : units_->pressure_to_lattice(options_.drive_value);
-  const std::string violation = lbm::drive_limit_violation(drive);
-  if (!violation.empty()) {
-    char text[500];
-    std::snprintf(text, sizeof text, "%s: %g is %s; lower '%s'%s, or refine dx",
-                  by_velocity ? "velocity" : "pressure_loss", options_.drive_value, violation.c_str(),
-                  by_velocity ? "velocity" : "pressure_loss",
-                  by_velocity ? ", lower n_dem or the DEM time step" : " or n_dem");
-    throw lbm::InputError(text);
-  }
-
-  lbm::Decomposition d;
-  d.global.hi = frame_->dims;
-  d.periodic = p.periodic;
-  d.comm = lbm::Communicator(world);
-  bool at_lower[3], at_upper[3];
-  for (int a = 0; a < 3; ++a) {
-    at_lower[a] = comm->myloc[a] == 0;
-    at_upper[a] = comm->myloc[a] == comm->procgrid[a] - 1;
-    for (int side = 0; side < 2; ++side) {
-      const bool edge = side == 0 ? at_lower[a] : at_upper[a];
-      d.neighbor[a][side] = (edge && !d.periodic[a]) ? -1 : comm->procneigh[a][side];
-    }
-  }
-  d.owned = frame_->owned_box(domain->sublo, domain->subhi, at_lower, at_upper);
-  for (int a = 0; a < 3; ++a)
-    if (d.owned.size(a) < 1)
-      throw lbm::InputError("the subdomain of rank " + std::to_string(comm->me) +
-                            " holds no lattice node on axis " + std::string(1, "xyz"[a]) +
-                            ": use fewer ranks along that axis (processors command)");
-  solver_ = std::make_unique<lbm::FluidSolver>(*geometry_, p, drive, d);
+  const lbm::FlowDrive drive = lbm_pore::drive_of(options_, *units_);
+  const coupling::SubdomainGrid grid{domain->sublo, domain->subhi, comm->myloc, comm->procgrid, comm->procneigh};
+  solver_ = std::make_unique<lbm::FluidSolver>(
+      *geometry_, p, drive, coupling::subdomain_decomposition(*frame_, grid, p.periodic, lbm::Communicator(world), comm->me));
 
   coupling::SphereCouplingOptions co;
   co.wall_scheme = wall_scheme(options_.boundary);
@@ -268,10 +187,7 @@ void FixLbmPore::build_lattice() {
   lp.cutoff = options_.lubrication_cutoff;
   lubrication_ = std::make_unique<coupling::LubricationKernel>(
       lp, coupling::LubricationScales{dx, units_->dt_lbm(), units_->force_unit()});
-  if (options_.deposit_speed >= 0.0)
-    monitor_setup_.criteria.speed_threshold = units_->velocity_to_lattice(options_.deposit_speed);
-  else if (by_velocity)  // deposits are "at zero or very low velocity" (paper Sec. III)
-    monitor_setup_.criteria.speed_threshold = coupling::kDepositSpeedFraction * std::abs(drive.inlet_velocity);
+  monitor_setup_.criteria.speed_threshold = lbm_pore::deposit_speed_threshold(options_, *units_, drive);
   monitor_ = std::make_unique<coupling::PoreMonitor>(monitor_setup_, *units_);
   if (!restored_values_.empty()) monitor_->restore(restored_values_.data());
   if (options_.vtk_every > 0)
@@ -316,9 +232,7 @@ void FixLbmPore::setup(int vflag) {
   lp.gravity = gravity_;
   load_model_ = std::make_unique<coupling::SubstepLoadModel>(lp);
   pairs_step_ = -1;  // the neighbour list was rebuilt (atoms may have been re-sorted)
-  run_start_ = MPI_Wtime();
-  run_fluid_steps_ = 0;
-  time_fluid_ = time_lubrication_ = time_diagnostics_ = 0.0;
+  timer_.start(MPI_Wtime());
   if (resumed_) {
     resumed_ = false;
     lbm::release_moving_nodes(*solver_);
@@ -385,7 +299,7 @@ void FixLbmPore::post_force(int) {
     return (atom->mask[i] & groupbit) ? state_[i].wall : kNoWall;
   };
   lubrication_->add_wall_forces(view, wall_of, f[0]);
-  time_lubrication_ += MPI_Wtime() - start;
+  timer_.add(coupling::RunTimer::kLubrication, MPI_Wtime() - start);
 }
 
 // The nearest wall of every owned particle, within the lubrication reach plus the farthest a
@@ -452,7 +366,7 @@ void FixLbmPore::fluid_step() {
   const double walls_start = MPI_Wtime();
   find_walls();
   const double walls_time = MPI_Wtime() - walls_start;
-  time_lubrication_ += walls_time;
+  timer_.add(coupling::RunTimer::kLubrication, walls_time);
   check_particle_speed();
   // Without particles (and none left to unmap) the step is the pure fluid step: a scene pays
   // only for what it uses.
@@ -465,8 +379,8 @@ void FixLbmPore::fluid_step() {
     coupling_->step(particles_.view());
   store_loads(count > 0);
   ++fluid_steps_;
-  ++run_fluid_steps_;
-  time_fluid_ += MPI_Wtime() - start - walls_time;
+  timer_.count_fluid_step();
+  timer_.add(coupling::RunTimer::kFluid, MPI_Wtime() - start - walls_time);
   const double diagnostics_start = MPI_Wtime();
   // A full scan of the lattice costs a sizeable part of a step: the NaN/runaway guard runs
   // every kCheckEvery fluid steps (a blow-up takes many steps to reach the particles), the
@@ -476,7 +390,7 @@ void FixLbmPore::fluid_step() {
   record_particles();
   if (vtk_ && fluid_steps_ % options_.vtk_every == 0)
     vtk_->write(*solver_, units_->time_to_physical(double(fluid_steps_)));
-  time_diagnostics_ += MPI_Wtime() - diagnostics_start;
+  timer_.add(coupling::RunTimer::kDiagnostics, MPI_Wtime() - diagnostics_start);
 }
 
 // The loads of the step, in script units, onto the atoms they belong to; ghosts' shares go

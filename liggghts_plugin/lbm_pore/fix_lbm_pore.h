@@ -13,6 +13,7 @@
 #include "atom_coupling_state.h"
 #include "contact/voxel_surface.h"
 #include "coupling/diagnostics/pore_monitor.h"
+#include "coupling/diagnostics/run_timer.h"
 #include "coupling/force/substep_load.h"
 #include "coupling/lubrication/lubrication_kernel.h"
 #include "fix.h"
@@ -115,10 +116,7 @@ class FixLbmPore : public Fix {
   std::string resume_checkpoint_;  // set by restart(): read once the lattice exists
   bool resumed_ = false;           // the mapping must be rebuilt from the checkpoint
   long long fluid_steps_ = 0;
-  // Wall-clock seconds: fluid step with the coupling stages, lubrication, diagnostics.
-  double time_fluid_ = 0.0, time_lubrication_ = 0.0, time_diagnostics_ = 0.0;
-  double run_start_ = 0.0;
-  long long run_fluid_steps_ = 0;
+  coupling::RunTimer timer_;  // where the time of a run went
 };
 
 }  // namespace LAMMPS_NS

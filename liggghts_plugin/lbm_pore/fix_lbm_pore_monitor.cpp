@@ -33,7 +33,7 @@ void stop_everywhere(Error* error, MPI_Comm world, int me, bool found_here, FILE
 
 // Guard: a particle may not cross more than kMaxShiftPerFluidStep cells per fluid step.
 void FixLbmPore::check_particle_speed() {
-  const auto fastest = coupling::fastest_particle(particles_.view());
+  auto fastest = coupling::fastest_particle(particles_.view());
   struct {
     double value;
     int rank;
@@ -41,14 +41,8 @@ void FixLbmPore::check_particle_speed() {
   MPI_Allreduce(&local, &global, 1, MPI_DOUBLE_INT, MPI_MAXLOC, world);
   monitor_->record_particle_shift(global.value);
   if (global.value <= coupling::kMaxShiftPerFluidStep) return;
-  char text[600];
-  std::snprintf(text, sizeof text,
-                "fix lbm/pore: particle %d moves %.3g cells per fluid step at DEM step " BIGINT_FORMAT
-                " (limit %.2f): the fluid cannot follow it. Likely cause: a contact too stiff "
-                "for the DEM step, or n_dem too large for this speed; lower n_dem or the time "
-                "step",
-                fastest.id, global.value, update->ntimestep, coupling::kMaxShiftPerFluidStep);
-  stop_everywhere(error, world, comm->me, comm->me == global.rank, screen, logfile, text,
+  stop_everywhere(error, world, comm->me, comm->me == global.rank, screen, logfile,
+                  coupling::fast_particle_message(fastest, update->ntimestep).c_str(),
                   "fix lbm/pore: a particle moves too fast for the lattice (see the message of the rank that found it)");
 }
 
@@ -58,35 +52,16 @@ void FixLbmPore::check_fluid_state() {
   int local_bad = problem.found ? 1 : 0, any_bad = 0;
   MPI_Allreduce(&local_bad, &any_bad, 1, MPI_INT, MPI_MAX, world);
   if (!any_bad) return;
-  char text[1200] = "";
+  std::string text;
   if (problem.found) {
-    // Most blow-ups start in the gap between a particle and a wall or another particle.
     const coupling::Vec3 node{double(problem.node[0]), double(problem.node[1]), double(problem.node[2])};
     const auto nearest = coupling::nearest_particle_surface(
         particles_.view(), coupling::PeriodicBox::from(solver_->decomposition()), node);
-    char near[200] = "";
-    if (nearest.id >= 0)
-      std::snprintf(near, sizeof near, "; nearest particle %d, its surface %.2f cells away", nearest.id,
-                    nearest.value);
-    char cause[400];
-    if (nearest.value < 1.0)
-      std::snprintf(cause, sizeof cause,
-                    "the flow is squeezed through a gap of less than a cell next to a particle: "
-                    "with 'velocity' the inlet flux must pass however tightly the pore clogs. "
-                    "Lower 'velocity' (gap speeds scale with it), drive by 'pressure_loss' "
-                    "(bounded gap speeds), or refine dx");
-    else
-      std::snprintf(cause, sizeof cause,
-                    "the drive or a particle is too fast for the lattice (keep speeds below "
-                    "%.2f in lattice units: lower 'velocity' or 'pressure_loss', refine dx or "
-                    "lower n_dem) or tau too close to 0.5",
-                    lbm::kMaxLatticeSpeed);
-    std::snprintf(text, sizeof text,
-                  "fix lbm/pore: fluid became unstable at DEM step " BIGINT_FORMAT
-                  " (fluid step %lld), %s%s. Likely cause: %s",
-                  update->ntimestep, fluid_steps_, problem.describe().c_str(), near, cause);
+    text = "fix lbm/pore: fluid became unstable at DEM step " + std::to_string(update->ntimestep) +
+           " (fluid step " + std::to_string(fluid_steps_) + "), " + problem.describe() +
+           coupling::instability_cause(nearest);
   }
-  stop_everywhere(error, world, comm->me, problem.found, screen, logfile, text,
+  stop_everywhere(error, world, comm->me, problem.found, screen, logfile, text.c_str(),
                   "fix lbm/pore: fluid became unstable (see the message of the rank that found it)");
 }
 
@@ -118,25 +93,10 @@ void FixLbmPore::record_particles() {
 // Called on every rank by thermo output and variables, so the reductions inside are safe.
 double FixLbmPore::compute_vector(int index) { return monitor_->value(index, *solver_, fluid_steps_); }
 
-// Where the time of a run went: the fluid steps (with mapping and moving walls), the
-// lubrication, the diagnostics, and the rest (DEM), summed over the run on rank 0.
+// Where the time of the run went, on rank 0.
 void FixLbmPore::post_run() {
-  if (comm->me != 0 || run_fluid_steps_ == 0) return;
-  const double total = MPI_Wtime() - run_start_;
-  const auto& t = coupling_->times();
-  const double coupling = t.mapping + t.refill + t.moving_walls + t.force;
-  char text[800];
-  std::snprintf(text, sizeof text,
-                "fix lbm/pore: %lld fluid steps in %.3f s: fluid %.3f s (of which mapping, refill, "
-                "moving walls and force %.3f s since the lattice was built), lubrication %.3f s, "
-                "diagnostics %.3f s, DEM and the rest %.3f s; %.3g s per fluid step\n",
-                run_fluid_steps_, total, time_fluid_, coupling, time_lubrication_, time_diagnostics_,
-                total - time_fluid_ - time_lubrication_ - time_diagnostics_,
-                total / double(run_fluid_steps_));
-  std::snprintf(text + std::strlen(text), sizeof text - std::strlen(text),
-                "fix lbm/pore: coupling stages since the lattice was built: mapping %.3f s, refill "
-                "%.3f s, moving walls %.3f s, force %.3f s, collide-stream %.3f s\n",
-                t.mapping, t.refill, t.moving_walls, t.force, t.collide_stream);
-  if (screen) std::fputs(text, screen);
-  if (logfile) std::fputs(text, logfile);
+  if (comm->me != 0) return;
+  const std::string text = timer_.report(MPI_Wtime(), coupling_->times());
+  if (screen) std::fputs(text.c_str(), screen);
+  if (logfile) std::fputs(text.c_str(), logfile);
 }

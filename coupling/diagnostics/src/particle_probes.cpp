@@ -1,6 +1,9 @@
 #include "coupling/diagnostics/particle_probes.h"
 
 #include <cmath>
+#include <cstdio>
+
+#include "lbm/stability.h"
 
 namespace coupling {
 
@@ -30,6 +33,36 @@ ParticleProbe nearest_particle_surface(const ParticleView& view, const PeriodicB
     }
   }
   return nearest;
+}
+
+std::string instability_cause(const ParticleProbe& nearest) {
+  char near[200] = "";
+  if (nearest.id >= 0)
+    std::snprintf(near, sizeof near, "; nearest particle %d, its surface %.2f cells away", nearest.id, nearest.value);
+  char cause[400];
+  if (nearest.value < 1.0)
+    std::snprintf(cause, sizeof cause,
+                  "the flow is squeezed through a gap of less than a cell next to a particle: "
+                  "with 'velocity' the inlet flux must pass however tightly the pore clogs. "
+                  "Lower 'velocity' (gap speeds scale with it), drive by 'pressure_loss' "
+                  "(bounded gap speeds), or refine dx");
+  else
+    std::snprintf(cause, sizeof cause,
+                  "the drive or a particle is too fast for the lattice (keep speeds below "
+                  "%.2f in lattice units: lower 'velocity' or 'pressure_loss', refine dx or "
+                  "lower n_dem) or tau too close to 0.5",
+                  lbm::kMaxLatticeSpeed);
+  return std::string(near) + ". Likely cause: " + cause;
+}
+
+std::string fast_particle_message(const ParticleProbe& fastest, long long dem_step) {
+  char text[600];
+  std::snprintf(text, sizeof text,
+                "fix lbm/pore: particle %d moves %.3g cells per fluid step at DEM step %lld (limit %.2f): "
+                "the fluid cannot follow it. Likely cause: a contact too stiff for the DEM step, or "
+                "n_dem too large for this speed; lower n_dem or the time step",
+                fastest.id, fastest.value, dem_step, kMaxShiftPerFluidStep);
+  return text;
 }
 
 }  // namespace coupling

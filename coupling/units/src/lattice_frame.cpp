@@ -2,6 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "lbm/input_error.h"
 
 namespace coupling {
 
@@ -23,6 +27,45 @@ lbm::Box LatticeFrame::owned_box(const double* sublo, const double* subhi, const
     box.hi[a] = std::clamp(hi, 0, dims[a]);
   }
   return box;
+}
+
+void LatticeFrame::check_fills_box(const double* box_lo, const double* box_hi) const {
+  for (int a = 0; a < 3; ++a) {
+    const double lattice_lo = origin[a] - 0.5 * dx;
+    const double lattice_hi = lattice_lo + dims[a] * dx;
+    if (std::abs(lattice_lo - box_lo[a]) <= 0.5 * dx && std::abs(lattice_hi - box_hi[a]) <= 0.5 * dx) continue;
+    char text[400];
+    std::snprintf(text, sizeof text,
+                  "scene: the lattice spans [%g, %g] on axis %c but the simulation box is "
+                  "[%g, %g]; make the box match the scene (dims %d x %d x %d cells of dx = %g) "
+                  "or set 'origin'",
+                  lattice_lo, lattice_hi, "xyz"[a], box_lo[a], box_hi[a], dims[0], dims[1], dims[2], dx);
+    throw lbm::InputError(text);
+  }
+}
+
+lbm::Decomposition subdomain_decomposition(const LatticeFrame& frame, const SubdomainGrid& grid,
+                                           const std::array<bool, 3>& periodic, const lbm::Communicator& comm,
+                                           int rank) {
+  lbm::Decomposition d;
+  d.global.hi = frame.dims;
+  d.periodic = periodic;
+  d.comm = comm;
+  bool at_lower[3], at_upper[3];
+  for (int a = 0; a < 3; ++a) {
+    at_lower[a] = grid.location[a] == 0;
+    at_upper[a] = grid.location[a] == grid.procs[a] - 1;
+    for (int side = 0; side < 2; ++side) {
+      const bool edge = side == 0 ? at_lower[a] : at_upper[a];
+      d.neighbor[a][side] = (edge && !periodic[a]) ? -1 : grid.neighbors[a][side];
+    }
+  }
+  d.owned = frame.owned_box(grid.sublo, grid.subhi, at_lower, at_upper);
+  for (int a = 0; a < 3; ++a)
+    if (d.owned.size(a) < 1)
+      throw lbm::InputError("the subdomain of rank " + std::to_string(rank) + " holds no lattice node on axis " +
+                            std::string(1, "xyz"[a]) + ": use fewer ranks along that axis (processors command)");
+  return d;
 }
 
 }  // namespace coupling

@@ -2,6 +2,7 @@
 #include <array>
 
 #include "lbm/block_layout.h"
+#include "lbm/decomposition.h"
 
 namespace coupling {
 
@@ -23,6 +24,27 @@ struct LatticeFrame {
   // ranks along an axis (at_lower/at_upper) extend to the lattice's ends.
   lbm::Box owned_box(const double* sublo, const double* subhi, const bool* at_lower,
                      const bool* at_upper) const;
+
+  // Throws lbm::InputError when the lattice does not fill the box [box_lo, box_hi] (every
+  // node's cell inside it, to half a cell), naming the axis and both extents.
+  void check_fills_box(const double* box_lo, const double* box_hi) const;
 };
+
+// A host's processor grid as the lattice needs it (LIGGGHTS: comm->myloc, procgrid,
+// procneigh and domain->sublo/subhi).
+struct SubdomainGrid {
+  const double* sublo = nullptr;
+  const double* subhi = nullptr;
+  const int* location = nullptr;         // this rank's position in the grid, per axis
+  const int* procs = nullptr;            // ranks per axis
+  const int (*neighbors)[2] = nullptr;   // rank below/above per axis
+};
+
+// This rank's share of the lattice: the nodes inside its subdomain, its face neighbours
+// (-1 at a non-periodic edge of the box). Throws lbm::InputError when a rank would own no
+// node along an axis (too many ranks for the lattice).
+lbm::Decomposition subdomain_decomposition(const LatticeFrame& frame, const SubdomainGrid& grid,
+                                           const std::array<bool, 3>& periodic, const lbm::Communicator& comm,
+                                           int rank);
 
 }  // namespace coupling

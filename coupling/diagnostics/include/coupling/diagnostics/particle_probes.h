@@ -4,6 +4,7 @@
 // step) and the one nearest to a node where the fluid became unstable (most blow-ups start
 // in a gap next to a particle). Local to a rank: the host reduces.
 #include <limits>
+#include <string>
 
 #include "coupling/particle_view.h"
 #include "coupling/periodic_box.h"
@@ -24,5 +25,14 @@ ParticleProbe fastest_particle(const ParticleView& view);
 
 // The particle (owned or ghost) whose surface is nearest to `point` (lattice units).
 ParticleProbe nearest_particle_surface(const ParticleView& view, const PeriodicBox& box, const Vec3& point);
+
+// The end of the message when the fluid became unstable at a node: which particle is
+// nearest ("; nearest particle 12, its surface 0.40 cells away") and the likely cause. A gap
+// of less than a cell next to a particle points at a clog squeezing the flux (velocity
+// drive); otherwise at a drive or particle too fast for the lattice.
+std::string instability_cause(const ParticleProbe& nearest);
+
+// The message when a particle moves faster than kMaxShiftPerFluidStep cells per fluid step.
+std::string fast_particle_message(const ParticleProbe& fastest, long long dem_step);
 
 }  // namespace coupling

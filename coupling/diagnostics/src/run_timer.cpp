@@ -1,0 +1,32 @@
+#include "coupling/diagnostics/run_timer.h"
+
+#include <cstdio>
+
+namespace coupling {
+
+void RunTimer::start(double now) {
+  *this = RunTimer{};
+  start_ = now;
+}
+
+std::string RunTimer::report(double now, const StageTimes& t) const {
+  if (fluid_steps_ == 0) return "";
+  const double total = now - start_;
+  const double coupling = t.mapping + t.refill + t.moving_walls + t.force;
+  const double* s = seconds_;
+  char text[800];
+  const int n = std::snprintf(
+      text, sizeof text,
+      "fix lbm/pore: %lld fluid steps in %.3f s: fluid %.3f s (of which mapping, refill, "
+      "moving walls and force %.3f s since the lattice was built), lubrication %.3f s, "
+      "diagnostics %.3f s, DEM and the rest %.3f s; %.3g s per fluid step\n",
+      fluid_steps_, total, s[kFluid], coupling, s[kLubrication], s[kDiagnostics],
+      total - s[kFluid] - s[kLubrication] - s[kDiagnostics], total / double(fluid_steps_));
+  std::snprintf(text + n, sizeof text - n,
+                "fix lbm/pore: coupling stages since the lattice was built: mapping %.3f s, refill "
+                "%.3f s, moving walls %.3f s, force %.3f s, collide-stream %.3f s\n",
+                t.mapping, t.refill, t.moving_walls, t.force, t.collide_stream);
+  return text;
+}
+
+}  // namespace coupling

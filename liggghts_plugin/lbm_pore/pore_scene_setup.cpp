@@ -1,0 +1,85 @@
+#include "pore_scene_setup.h"
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "lbm/input_error.h"
+#include "lbm/pore_scene.h"
+#include "lbm/stability.h"
+#include "lbm/voxel_file.h"
+
+namespace lbm_pore {
+
+namespace {
+int cells(double length, double dx) { return static_cast<int>(std::lround(length / dx)); }
+}  // namespace
+
+SceneSetup build_scene(const PoreOptions& o, const double* box_lo) {
+  const double dx = o.dx;
+  std::array<double, 3> origin;
+  for (int a = 0; a < 3; ++a) origin[a] = o.origin_given ? o.origin[a] : box_lo[a] + 0.5 * dx;
+  SceneSetup scene;
+  if (o.scene == PoreOptions::Scene::kPore) {
+    lbm::PoreSceneSpec spec;
+    spec.inlet_length = cells(o.inlet_length, dx);
+    spec.free_length = cells(o.free_length, dx);
+    spec.pore_length = cells(o.pore_length, dx);
+    spec.outlet_length = cells(o.outlet_length, dx);
+    spec.width = cells(o.width, dx);
+    spec.pore_diameter = o.pore_diameter / dx;
+    scene.geometry = std::make_shared<lbm::VoxelGeometry>(lbm::make_pore_scene(spec, dx, origin));
+    scene.monitor = coupling::pore_scene_monitor(spec);
+    return scene;
+  }
+  auto file = std::make_shared<lbm::VoxelGeometry>(lbm::load_voxel_file(o.voxel_file));
+  if (std::abs(file->spacing() - dx) > 1e-9 * dx)
+    throw lbm::InputError("scene voxels: the file's spacing " + std::to_string(file->spacing()) +
+                          " differs from dx " + std::to_string(dx));
+  file->place_at(origin);  // where the box (or 'origin') says; the file's own is ignored
+  scene.monitor = coupling::voxel_geometry_monitor(*file);
+  scene.geometry = file;
+  return scene;
+}
+
+lbm::FlowDrive drive_of(const PoreOptions& o, const coupling::UnitConversion& units) {
+  lbm::FlowDrive drive;
+  drive.axis = 0;
+  const bool by_velocity = o.drive == PoreOptions::Drive::kVelocity;
+  drive.kind = by_velocity ? lbm::FlowDrive::kInletVelocity : lbm::FlowDrive::kPressureLoss;
+  if (by_velocity)
+    drive.inlet_velocity = units.velocity_to_lattice(o.drive_value);
+  else
+    drive.pressure_loss = units.pressure_to_lattice(o.drive_value);
+  const std::string violation = lbm::drive_limit_violation(drive);
+  if (violation.empty()) return drive;
+  char text[500];
+  std::snprintf(text, sizeof text, "%s: %g is %s; lower '%s'%s, or refine dx",
+                by_velocity ? "velocity" : "pressure_loss", o.drive_value, violation.c_str(),
+                by_velocity ? "velocity" : "pressure_loss",
+                by_velocity ? ", lower n_dem or the DEM time step" : " or n_dem");
+  throw lbm::InputError(text);
+}
+
+void check_boundaries(const PoreOptions& o, const int* periodicity) {
+  for (int a = 1; a < 3; ++a)
+    if (o.lateral_periodic != (periodicity[a] != 0))
+      throw lbm::InputError(std::string("lateral: the fluid is ") + (o.lateral_periodic ? "periodic" : "walled") +
+                            " along " + "xyz"[a] + " but the LIGGGHTS boundary there is " +
+                            (periodicity[a] ? "periodic" : "not periodic") +
+                            "; use 'boundary f p p' with 'lateral periodic' or 'boundary f f f' "
+                            "with 'lateral wall'");
+  if (periodicity[0])
+    throw lbm::InputError("the flow axis x must not be periodic: use 'boundary f ...' (the "
+                          "fluid enters at x-lo and leaves at x-hi)");
+}
+
+double deposit_speed_threshold(const PoreOptions& o, const coupling::UnitConversion& units,
+                               const lbm::FlowDrive& drive) {
+  if (o.deposit_speed >= 0.0) return units.velocity_to_lattice(o.deposit_speed);
+  if (drive.kind == lbm::FlowDrive::kInletVelocity)
+    return coupling::kDepositSpeedFraction * std::abs(drive.inlet_velocity);
+  return coupling::DepositionCriteria{}.speed_threshold;
+}
+
+}  // namespace lbm_pore
