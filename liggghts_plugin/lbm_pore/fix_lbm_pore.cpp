@@ -49,12 +49,6 @@ using namespace lbm_pore::limits;
 
 namespace {
 int cells(double length, double dx) { return static_cast<int>(std::lround(length / dx)); }
-
-coupling::MovingWallScheme wall_scheme(const std::string& name) {
-  if (name == "bouzidi") return coupling::MovingWallScheme::kBouzidi;
-  if (name == "bounce_back") return coupling::MovingWallScheme::kBounceBack;
-  return coupling::MovingWallScheme::kMeiLuoShyy;
-}
 }  // namespace
 
 FixLbmPore::FixLbmPore(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg, arg) {
@@ -323,7 +317,7 @@ void FixLbmPore::build_lattice() {
   solver_ = std::make_unique<lbm::FluidSolver>(*geometry_, p, drive, d);
 
   coupling::SphereCouplingOptions co;
-  co.wall_scheme = wall_scheme(options_.boundary);
+  co.wall_scheme = lbm::moving_wall::parse(options_.boundary);
   coupling_ = std::make_unique<coupling::SphereCoupling>(*solver_, co);
   coupling::LubricationParameters lp;
   lp.rho = 1.0;
