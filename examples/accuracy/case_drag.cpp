@@ -18,7 +18,7 @@ struct DragRun {
   long steps = 0;
 };
 
-DragRun drag(int diameter, coupling::MovingWallScheme scheme) {
+DragRun drag(int diameter, lbm::MovingWallScheme scheme) {
   const int L = static_cast<int>(std::lround(diameter / kDragChi));
   const double a = 0.5 * diameter, nu = 1.0 / 6.0;
   const double U_target = 2e-4;  // Re = U d / nu ~ 0.01: Stokes flow
@@ -50,7 +50,7 @@ DragRun drag(int diameter, coupling::MovingWallScheme scheme) {
 void run_drag(const Options& options, std::vector<Row>& rows) {
   const std::vector<int> diameters = options.quick ? std::vector<int>{6, 8}
                                                    : std::vector<int>{6, 8, 12, 16};
-  using coupling::MovingWallScheme;
+  using lbm::MovingWallScheme;
   for (MovingWallScheme scheme :
        {MovingWallScheme::kMeiLuoShyy, MovingWallScheme::kBouzidi, MovingWallScheme::kBounceBack}) {
     if (options.quick && scheme == MovingWallScheme::kBounceBack) continue;
@@ -59,7 +59,7 @@ void run_drag(const Options& options, std::vector<Row>& rows) {
       const DragRun r = drag(d, scheme);
       Row row;
       row.case_name = "drag";
-      row.option = coupling::to_string(scheme);
+      row.option = lbm::moving_wall::label(scheme);
       row.resolution = d;
       row.error = std::abs(r.K / kDragKRef - 1.0);
       row.reference = "Sangani-Acrivos1982 K(chi=0.5)";

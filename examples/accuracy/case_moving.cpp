@@ -20,7 +20,7 @@ void run_moving(const Options& options, std::vector<Row>& rows) {
   const std::vector<int> diameters = options.quick ? std::vector<int>{6, 8}
                                                    : std::vector<int>{6, 8, 12};
   const long steps = options.quick ? 3000 : 8000;
-  using coupling::MovingWallScheme;
+  using lbm::MovingWallScheme;
   for (MovingWallScheme scheme :
        {MovingWallScheme::kMeiLuoShyy, MovingWallScheme::kBouzidi, MovingWallScheme::kBounceBack}) {
     if (options.quick && scheme != MovingWallScheme::kMeiLuoShyy) continue;
@@ -74,7 +74,7 @@ void run_moving(const Options& options, std::vector<Row>& rows) {
       const double drift = (m1 - m0) / m0;
       Row row;
       row.case_name = "moving";
-      row.option = coupling::to_string(scheme);
+      row.option = lbm::moving_wall::label(scheme);
       row.resolution = d;
       row.error = std::abs(K / kDragKRef - 1.0);
       row.reference = "Sangani-Acrivos1982 K(chi=0.5)";

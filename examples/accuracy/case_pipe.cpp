@@ -24,7 +24,7 @@ struct PipeRun {
   long steps = 0;
 };
 
-PipeRun pipe(double R, lbm::LinkScheme scheme) {
+PipeRun pipe(double R, lbm::MovingWallScheme scheme) {
   const int n = static_cast<int>(std::ceil(2 * R)) + 2;
   const double centre = 0.5 * (n - 1);
   lbm::VoxelGeometry g({2, n, n});
@@ -110,9 +110,10 @@ void run_pipe(const Options& options, std::vector<Row>& rows) {
   const std::vector<double> radii = options.quick ? std::vector<double>{4, 8}
                                                   : std::vector<double>{4, 8, 16};
   const struct {
-    lbm::LinkScheme scheme;
+    lbm::MovingWallScheme scheme;
     const char* name;
-  } schemes[] = {{lbm::LinkScheme::kBouzidi, "Bouzidi"}, {lbm::LinkScheme::kBounceBack, "bounce-back"}};
+  } schemes[] = {{lbm::MovingWallScheme::kBouzidi, "Bouzidi"},
+                 {lbm::MovingWallScheme::kBounceBack, "bounce-back"}};
   for (const auto& s : schemes)
     for (double R : radii) {
       Stopwatch watch;

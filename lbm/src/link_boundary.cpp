@@ -1,40 +1,46 @@
 #include "lbm/link_boundary.h"
 
-#include "lbm/d3q19.h"
-#include "lbm/node_type.h"
+#include <stdexcept>
+
+#include "lbm/fluid_solver.h"
+#include "lbm/moving_wall/bounce_back.h"
+#include "lbm/moving_wall/bouzidi.h"
+#include "lbm/moving_wall/mei_luo_shyy.h"
 
 namespace lbm {
 
-void apply_links(const std::vector<BoundaryLink>& links, LinkScheme scheme, double rho0,
+void apply_links(const std::vector<BoundaryLink>& links, MovingWallScheme scheme,
+                 FluidSolver& solver, moving_wall::MomentCache* cache,
+                 std::vector<std::array<double, 3>>* momentum) {
+  if (scheme != MovingWallScheme::kMeiLuoShyy) {
+    apply_links(links, scheme, solver.parameters().rho0, solver.layout(), solver.node_types(),
+                solver.populations(), momentum);
+    return;
+  }
+  moving_wall::MomentCache local;
+  moving_wall::MomentCache& moments = cache ? *cache : local;
+  moments.begin(solver.layout().num_cells());
+  const moving_wall::MeiLuoShyy mls{solver.parameters().rho0, 1.0 / solver.trt().omega_plus,
+                                    solver.parameters().body_force, &solver.node_types(), &moments};
+  moving_wall::apply(links, mls, solver.layout(), solver.populations(), momentum);
+}
+
+void apply_links(const std::vector<BoundaryLink>& links, MovingWallScheme scheme, double rho0,
                  const BlockLayout& layout, const std::vector<std::uint8_t>& node_type,
                  PopulationField& f, std::vector<std::array<double, 3>>* momentum) {
-  using L = D3Q19;
-  if (momentum) momentum->resize(links.size());
-  for (std::size_t l = 0; l < links.size(); ++l) {
-    const BoundaryLink& link = links[l];
-    const int q = link.q, qo = L::opposite(q);
-    const std::ptrdiff_t off = layout.offset(L::c[q][0], L::c[q][1], L::c[q][2]);
-    const std::size_t x = link.fluid_cell;
-    const std::size_t wall_node = x + off;
-    const double cu = L::c[q][0] * link.wall_velocity[0] + L::c[q][1] * link.wall_velocity[1] +
-                      L::c[q][2] * link.wall_velocity[2];
-    const double wall_term = 6.0 * L::w[q] * rho0 * cu;
-    const double out = f.at(q, x);  // f*_q(x): the population travelling into the wall
-    double back;
-    const double s = link.fraction;
-    if (scheme == LinkScheme::kBouzidi && s < 0.5 && node_type[x - off] == kFluid) {
-      back = 2.0 * s * out + (1.0 - 2.0 * s) * f.at(q, x - off) - wall_term;
-    } else if (scheme == LinkScheme::kBouzidi && s >= 0.5) {
-      back = (out + (2.0 * s - 1.0) * f.at(qo, x) - wall_term) / (2.0 * s);
-    } else {
-      back = out - wall_term;
-    }
-    f.at(qo, wall_node) = static_cast<Real>(back);
-    if (momentum) {
-      const double m = out + back;
-      (*momentum)[l] = {m * L::c[q][0], m * L::c[q][1], m * L::c[q][2]};
-    }
+  switch (scheme) {
+    case MovingWallScheme::kBounceBack:
+      moving_wall::apply(links, moving_wall::BounceBack{rho0}, layout, f, momentum);
+      return;
+    case MovingWallScheme::kBouzidi:
+      moving_wall::apply(links, moving_wall::Bouzidi{rho0, &node_type}, layout, f, momentum);
+      return;
+    case MovingWallScheme::kMeiLuoShyy:
+      break;
   }
+  throw std::invalid_argument(
+      std::string("apply_links: the ") + moving_wall::label(scheme) +
+      " scheme needs the solver's tau and body force; pass the FluidSolver");
 }
 
 }  // namespace lbm

@@ -26,6 +26,19 @@ MacroscopicFields compute_fields(const FluidSolver& solver) {
   return out;
 }
 
+NodeMoments node_moments(const PopulationField& f, std::size_t cell,
+                         const std::array<double, 3>& body_force) {
+  NodeMoments m;
+  double j[3] = {0.0, 0.0, 0.0};
+  for (int q = 0; q < D3Q19::Q; ++q) {
+    const double v = f.at(q, cell);
+    m.rho += v;
+    for (int a = 0; a < 3; ++a) j[a] += v * D3Q19::c[q][a];
+  }
+  for (int a = 0; a < 3; ++a) m.u[a] = (j[a] - 0.5 * body_force[a]) / m.rho;
+  return m;
+}
+
 namespace {
 // Visits the owned fluid nodes of global plane `index` normal to `axis`.
 template <class Visit>

@@ -35,12 +35,6 @@ namespace {
 std::string fix_message(const std::string& what) {
   return what.rfind("fix lbm/pore", 0) == 0 ? what : "fix lbm/pore: " + what;
 }
-
-coupling::MovingWallScheme wall_scheme(const std::string& name) {
-  if (name == "bouzidi") return coupling::MovingWallScheme::kBouzidi;
-  if (name == "bounce_back") return coupling::MovingWallScheme::kBounceBack;
-  return coupling::MovingWallScheme::kMeiLuoShyy;
-}
 }  // namespace
 
 FixLbmPore::FixLbmPore(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg, arg) {
@@ -179,7 +173,7 @@ void FixLbmPore::build_lattice() {
       *geometry_, p, drive, coupling::subdomain_decomposition(*frame_, grid, p.periodic, lbm::Communicator(world), comm->me));
 
   coupling::SphereCouplingOptions co;
-  co.wall_scheme = wall_scheme(options_.boundary);
+  co.wall_scheme = lbm::moving_wall::parse(options_.boundary);
   coupling_ = std::make_unique<coupling::SphereCoupling>(*solver_, co);
   coupling::LubricationParameters lp;
   lp.rho = 1.0;

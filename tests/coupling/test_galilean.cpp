@@ -10,6 +10,7 @@
 #include "sphere_cases.h"
 
 using namespace coupling;
+using lbm::MovingWallScheme;
 
 namespace {
 std::vector<double> force_history(bool moving, MovingWallScheme scheme, MomentumExchange method,

@@ -53,7 +53,7 @@ double order(double coarse_error, double fine_error) {
 // Starts from the analytical profile (the steady state does not depend on the start, it is
 // only reached sooner) and runs until the velocity changes by less than 1e-9 relative per
 // 100 steps.
-double pipe(double R, lbm::LinkScheme scheme) {
+double pipe(double R, lbm::MovingWallScheme scheme) {
   const int n = static_cast<int>(std::ceil(2 * R)) + 2;
   const double centre = 0.5 * (n - 1);
   lbm::VoxelGeometry g({2, n, n});
@@ -122,7 +122,7 @@ double pipe(double R, lbm::LinkScheme scheme) {
 
 // Curved-wall errors oscillate with how the wall cuts the lattice, so each resolution is
 // the mean over three radii around the nominal one (R, R +- 7.5 %).
-double mean_pipe_error(double R, lbm::LinkScheme scheme) {
+double mean_pipe_error(double R, lbm::MovingWallScheme scheme) {
   return (pipe(0.925 * R, scheme) + pipe(R, scheme) + pipe(1.075 * R, scheme)) / 3.0;
 }
 
@@ -163,9 +163,9 @@ TEST(PlanePoiseuille, SecondOrderConvergence) {
 }
 
 TEST(PipePoiseuille, BouzidiLinksConvergeAtSecondOrder) {
-  const double e4 = mean_pipe_error(4.0, lbm::LinkScheme::kBouzidi);
-  const double e8 = mean_pipe_error(8.0, lbm::LinkScheme::kBouzidi);
-  const double e16 = mean_pipe_error(16.0, lbm::LinkScheme::kBouzidi);
+  const double e4 = mean_pipe_error(4.0, lbm::MovingWallScheme::kBouzidi);
+  const double e8 = mean_pipe_error(8.0, lbm::MovingWallScheme::kBouzidi);
+  const double e16 = mean_pipe_error(16.0, lbm::MovingWallScheme::kBouzidi);
   std::printf("pipe Bouzidi mean L2 errors R=4,8,16: %.3e %.3e %.3e; orders %.2f %.2f\n", e4, e8,
               e16, order(e4, e8), order(e8, e16));
   EXPECT_LT(e4, 0.03);
@@ -174,8 +174,8 @@ TEST(PipePoiseuille, BouzidiLinksConvergeAtSecondOrder) {
 }
 
 TEST(PipePoiseuille, StaircaseBounceBackIsLessAccurateThanBouzidi) {
-  const double bb = mean_pipe_error(8.0, lbm::LinkScheme::kBounceBack);
-  const double bz = mean_pipe_error(8.0, lbm::LinkScheme::kBouzidi);
+  const double bb = mean_pipe_error(8.0, lbm::MovingWallScheme::kBounceBack);
+  const double bz = mean_pipe_error(8.0, lbm::MovingWallScheme::kBouzidi);
   std::printf("pipe R=8: bounce-back mean L2 %.3e, Bouzidi mean L2 %.3e\n", bb, bz);
   EXPECT_LT(bb, 0.1);
   EXPECT_LT(bz, 0.5 * bb);

@@ -25,7 +25,7 @@ SphereCoupling::SphereCoupling(lbm::FluidSolver& solver, const SphereCouplingOpt
       options_(options),
       mapping_(solver.layout(), PeriodicBox::from(solver.decomposition())) {
   const double tau = 1.0 / solver.trt().omega_plus;
-  if (options.wall_scheme == MovingWallScheme::kMeiLuoShyy && std::abs(tau - 2.0) < 0.2)
+  if (options.wall_scheme == lbm::MovingWallScheme::kMeiLuoShyy && std::abs(tau - 2.0) < 0.2)
     throw lbm::InputError("moving walls: the Mei-Luo-Shyy scheme needs tau away from 2 "
                           "(|tau - 2| >= 0.2), got tau = " + std::to_string(tau) +
                           "; choose another tau or the Bouzidi scheme");
@@ -56,7 +56,7 @@ void SphereCoupling::apply_moving_walls_and_force(const ParticleView& view) {
   {
     StageTimer t(times_.moving_walls);
     build_sphere_links(mapping_, view, solver_.node_types(), links_);
-    apply_moving_walls(links_, options_.wall_scheme, solver_, &moment_cache_);
+    lbm::apply_links(links_.links, options_.wall_scheme, solver_, &moment_cache_);
   }
   StageTimer t(times_.force);
   loads_.reset(view.num_total);

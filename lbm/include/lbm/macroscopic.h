@@ -15,6 +15,15 @@ struct MacroscopicFields {
 };
 MacroscopicFields compute_fields(const FluidSolver& solver);
 
+// Density and velocity at one node from its (post-collision) populations; the velocity has
+// Guo's half-force removed, u = (sum_q f_q c_q - F/2) / rho (see collide_stream.cpp).
+struct NodeMoments {
+  double rho = 0.0;
+  std::array<double, 3> u{0.0, 0.0, 0.0};
+};
+NodeMoments node_moments(const PopulationField& f, std::size_t cell,
+                         const std::array<double, 3>& body_force);
+
 // Reductions over all ranks (every rank gets the result).
 // Flux through the plane `index` normal to `axis`: sum(rho u_axis) / rho0 over its fluid
 // nodes (cell area 1). The mass flux is what the scheme conserves exactly at steady state;

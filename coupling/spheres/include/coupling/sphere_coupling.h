@@ -4,18 +4,18 @@
 // momentum exchange -> open boundaries -> collide_stream.
 #include <chrono>
 
-#include "coupling/boundary/moving_wall_scheme.h"
 #include "coupling/boundary/sphere_links.h"
 #include "coupling/force/momentum_exchange.h"
 #include "coupling/mapping/sphere_mapping.h"
 #include "coupling/particle_view.h"
 #include "coupling/reconstruction/refill.h"
 #include "lbm/fluid_solver.h"
+#include "lbm/link_boundary.h"
 
 namespace coupling {
 
 struct SphereCouplingOptions {
-  MovingWallScheme wall_scheme = MovingWallScheme::kMeiLuoShyy;
+  lbm::MovingWallScheme wall_scheme = lbm::MovingWallScheme::kMeiLuoShyy;
   RefillScheme refill = RefillScheme::kEquilibriumAveragedDensity;
   MomentumExchange momentum_exchange = MomentumExchange::kGalileanInvariant;
 };
@@ -64,7 +64,7 @@ class SphereCoupling {
   SphereCouplingOptions options_;
   SphereMapping mapping_;
   SphereLinks links_;
-  FluidMomentCache moment_cache_;  // reused every step
+  lbm::moving_wall::MomentCache moment_cache_;  // reused every step
   HydrodynamicLoads loads_;
   MassChange mass_;
   StageTimes times_;

@@ -1,0 +1,42 @@
+#include "lbm/moving_wall/mei_luo_shyy.h"
+
+#include "lbm/collide_stream.h"
+#include "lbm/node_type.h"
+#include "link_loop.h"
+
+namespace lbm::moving_wall {
+
+double MeiLuoShyy::returning_population(const BoundaryLink& link, std::ptrdiff_t offset,
+                                        const PopulationField& f) const {
+  using L = D3Q19;
+  using Vec3 = std::array<double, 3>;
+  const int q = link.q;
+  const std::size_t x = link.fluid_cell;
+  const double delta = link.fraction;
+  const Vec3& uw = link.wall_velocity;
+  const NodeMoments& m = cache->moments(f, x, body_force);
+  const double rho_f = m.rho;
+  const Vec3 u_f = m.u;
+  Vec3 u_bf;
+  double chi;
+  if (delta >= 0.5) {
+    const double b = 1.5 / delta;
+    for (int a = 0; a < 3; ++a) u_bf[a] = (1.0 - b) * u_f[a] + b * uw[a];
+    chi = (2.0 * delta - 1.0) / (tau + 0.5);
+  } else {
+    const std::size_t xff = x - offset;
+    u_bf = (*node_type)[xff] == kFluid ? cache->moments(f, xff, body_force).u : u_f;
+    chi = (2.0 * delta - 1.0) / (tau - 2.0);
+  }
+  const double cu_bf = L::c[q][0] * (u_bf[0] - u_f[0]) + L::c[q][1] * (u_bf[1] - u_f[1]) +
+                       L::c[q][2] * (u_bf[2] - u_f[2]);
+  const double f_star = equilibrium(q, rho_f, u_f) + 3.0 * L::w[q] * rho_f * cu_bf;
+  const double out = f.at(q, x);  // f*_q(x): travelling into the wall
+  return (1.0 - chi) * out + chi * f_star - wall_term(q, rho0, uw);
+}
+
+template void apply<MeiLuoShyy>(const std::vector<BoundaryLink>&, const MeiLuoShyy&,
+                                const BlockLayout&, PopulationField&,
+                                std::vector<std::array<double, 3>>*);
+
+}  // namespace lbm::moving_wall
