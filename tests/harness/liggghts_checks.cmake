@@ -14,12 +14,13 @@ function(lbm_pore_liggghts_checks)
   if(NOT Python3_FOUND)
     return()
   endif()
+  set(_environment "PYTHONPATH=${LBM_PORE_HARNESS_DIR}" ${arg_ENVIRONMENT})
   foreach(_case IN LISTS arg_CASES)
     add_test(NAME ${arg_PREFIX}_${_case}
              COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURCE_DIR}/${arg_SCRIPT}
                      --driver $<TARGET_FILE:liggghts-lbm> --scripts ${CMAKE_CURRENT_SOURCE_DIR}
                      ${arg_ARGS} ${_case})
     set_tests_properties(${arg_PREFIX}_${_case} PROPERTIES TIMEOUT ${arg_TIMEOUT} LABELS ${arg_LABEL}
-      ENVIRONMENT "PYTHONPATH=${LBM_PORE_HARNESS_DIR};${arg_ENVIRONMENT}")
+      ENVIRONMENT "${_environment}")
   endforeach()
 endfunction()
