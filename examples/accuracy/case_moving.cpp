@@ -1,18 +1,19 @@
 // Case 5: a sphere translating at constant velocity through a periodic box (chi = d/L = 0.5)
 // for thousands of steps, crossing cells in all three directions. A body force g on the
 // fluid along the motion holds the flow in a steady periodic state; in the sphere's frame
-// this is the fixed simple-cubic array of case 2 (Stokes drag of a cubic array is isotropic,
-// so the oblique direction does not change K). K = g L^3 / (6 pi mu a U_rel), U_rel the
-// superficial fluid velocity relative to the sphere averaged over the second half of the
-// run; error |K/K_ref - 1| against Sangani & Acrivos (1982). Also reported: the drift of
-// the fluid mass over the run (covering/refilling and the moving-wall terms are not exactly
-// conservative) and the rms fluctuation of the force as the sphere crosses cells.
+// this is the fixed simple-cubic array of case 2 (cases/sphere_array_drag.h; Stokes drag
+// of a cubic array is isotropic, so the oblique direction does not change K).
+// K = g L^3 / (6 pi mu a U_rel), U_rel the superficial fluid velocity relative to the
+// sphere averaged over the second half of the run; error |K/K_ref - 1| against Sangani &
+// Acrivos (1982). Also reported: the drift of the fluid mass over the run
+// (covering/refilling and the moving-wall terms are not exactly conservative) and the rms
+// fluctuation of the force as the sphere crosses cells.
 #include <cmath>
 #include <cstdio>
 #include <vector>
 
 #include "accuracy.h"
-#include "coupling/sphere_coupling.h"
+#include "cases/sphere_array_drag.h"
 
 namespace accuracy {
 
@@ -26,11 +27,11 @@ void run_moving(const Options& options, std::vector<Row>& rows) {
     if (options.quick && scheme != MovingWallScheme::kMeiLuoShyy) continue;
     for (int d : diameters) {
       Stopwatch watch;
-      const int L = static_cast<int>(std::lround(d / kDragChi));
+      const int L = static_cast<int>(std::lround(d / cases::kDragChi));
       const double a = 0.5 * d, nu = 1.0 / 6.0, U = 0.005;  // Re = U d / nu = 0.18 ... 0.36
       const double norm = std::sqrt(1.0 + 0.09 + 0.01);
       const coupling::Vec3 n{1.0 / norm, 0.3 / norm, 0.1 / norm};
-      const double g = U * 6.0 * kPi * nu * a * kDragKRef / double(L) / L / L;
+      const double g = cases::drag_array_body_force(U, nu, a, L);
       auto solver = make_solver({L, L, L}, {true, true, true}, 1.0, {g * n[0], g * n[1], g * n[2]});
       coupling::ParticleSet particles;
       const coupling::Vec3 x0{0.5 * L + 0.23, 0.5 * L - 0.31, 0.5 * L + 0.17};
@@ -76,25 +77,25 @@ void run_moving(const Options& options, std::vector<Row>& rows) {
       row.case_name = "moving";
       row.option = lbm::moving_wall::label(scheme);
       row.resolution = d;
-      row.error = std::abs(K / kDragKRef - 1.0);
+      row.error = std::abs(K / cases::kDragKRef - 1.0);
       row.reference = "Sangani-Acrivos1982 K(chi=0.5)";
       row.wall_seconds = watch.seconds();
       row.value = K;
-      row.reference_value = kDragKRef;
+      row.reference_value = cases::kDragKRef;
       row.steps = steps;
       char note[240];
       std::snprintf(note, sizeof note,
                     "signed_error=%+.4f;mass_drift=%+.3e;mass_drift_per_step=%+.2e;"
                     "force_rms/mean=%.4f;F_me/(g*N_fluid)=%.4f;travel_cells=%.0f",
-                    K / kDragKRef - 1.0, drift, drift / steps, F_rms / std::abs(F_mean),
+                    K / cases::kDragKRef - 1.0, drift, drift / steps, F_rms / std::abs(F_mean),
                     sum_balance / samples, U * steps);
       row.note = note;
       rows.push_back(row);
       std::fprintf(stderr,
                    "moving %-12s d=%2d  K %.4f (ref %.4f) error %+.2f %%  mass drift %+.2e  "
                    "force rms %.2f %%  %ld steps  %.2f s\n",
-                   row.option.c_str(), d, K, kDragKRef, 100 * (K / kDragKRef - 1.0), drift,
-                   100 * F_rms / std::abs(F_mean), steps, row.wall_seconds);
+                   row.option.c_str(), d, K, cases::kDragKRef, 100 * (K / cases::kDragKRef - 1.0),
+                   drift, 100 * F_rms / std::abs(F_mean), steps, row.wall_seconds);
     }
   }
 }

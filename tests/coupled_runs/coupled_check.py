@@ -1,73 +1,19 @@
 #!/usr/bin/env python3
 """Integration checks of fix lbm/pore: runs liggghts-lbm on the tiny scenes of this folder and
 compares what it measures with a physical expectation or a reference run. Prints every figure
-with its bound; exits 1 when one fails.
+with its bound (tests/harness/liggghts_run.py); exits 1 when one fails.
 
 usage: coupled_check.py --driver liggghts-lbm --scripts DIR [--mpirun mpirun] CASE
 CASE: adhesion | clog | parallel | restart | bad_arguments
 """
-import argparse
 import math
-import re
-import os
 import subprocess
-import sys
-import tempfile
 
-FAILURES = []
-
-
-def check(name, value, ok, bound):
-    print(f"{'PASS' if ok else 'FAIL'} {name} = {value} ({bound})")
-    if not ok:
-        FAILURES.append(name)
+from liggghts_run import (at_step, check, error_line, has_nan, main, relative_difference,
+                          thermo_rows)
 
 
-def run(cmd, cwd, timeout=240):
-    result = subprocess.run(cmd, cwd=cwd, capture_output=True, text=True, errors="replace",
-                            timeout=timeout)
-    return result.returncode, result.stdout + result.stderr
-
-
-def liggghts(args, script, variables, cwd, ranks=1, expect_ok=True, timeout=240):
-    cmd = [args.driver, "-in", os.path.join(args.scripts, script), "-var", "dir", args.scripts]
-    for key, value in variables.items():
-        cmd += ["-var", key, str(value)]
-    if ranks > 1:
-        cmd = [args.mpirun, "-np", str(ranks), "--oversubscribe"] + cmd
-    code, out = run(cmd, cwd, timeout)
-    if expect_ok and (code != 0 or "ERROR" in out):
-        print(out[-3000:])
-        sys.exit(f"FAIL {script} {variables}: liggghts-lbm failed (exit {code})")
-    return code, out
-
-
-def thermo(out):
-    """The rows of the last thermo block, as dicts keyed by the header words without LIGGGHTS's
-    v_/f_/c_ prefixes (it prints some headers with them, some without)."""
-    header, rows = None, []
-    for line in out.splitlines():
-        words = line.split()
-        if words and words[0] == "Step":
-            header, rows = [re.sub(r"^[vfc]_", "", w) for w in words], []
-            continue
-        if header and len(words) == len(header):
-            try:
-                rows.append(dict(zip(header, (float(w) for w in words))))
-            except ValueError:
-                pass
-    return rows
-
-
-def at(rows, step):
-    return next(r for r in rows if r["Step"] == step)
-
-
-def relative(a, b):
-    return abs(a - b) / max(abs(a), abs(b), 1e-300)
-
-
-def case_adhesion(args, work):
+def case_adhesion(h):
     """A particle resting on the pore's flat floor, pressed by its net weight N = (rho_p - rho)
     V g, is held by wall friction at a low inlet velocity and torn off at a high one. In the
     Stokes regime its drag is linear in the inlet velocity, so the drag measured on the held
@@ -81,16 +27,15 @@ def case_adhesion(args, work):
     z0 = 3.0 + radius - normal / kw
 
     def displacement(u):
-        rows = thermo(liggghts(args, "in.adhesion", {"u": u, "steps": steps, "z0": f"{z0:.10g}"},
-                               work)[1])
-        return rows, at(rows, steps)["px"] - at(rows, 0)["px"]
+        rows = thermo_rows(h.run("in.adhesion", {"u": u, "steps": steps, "z0": f"{z0:.10g}"}).output)
+        return rows, at_step(rows, steps)["px"] - at_step(rows, 0)["px"]
 
     u_low, u_high = 3e-5, 2e-3
     rows_low, held = displacement(u_low)
     _, torn = displacement(u_high)
-    check("adhesion_held_displacement_cells", f"{held:.3g}", abs(held) < 0.05,
+    check("adhesion_held_displacement_cells", abs(held) < 0.05, f"{held:.3g}",
           f"|dx| < 0.05 over {steps} steps at u = {u_low:g} (the friction spring's stretch is ~3e-4)")
-    check("adhesion_torn_off_displacement_cells", f"{torn:.3g}", torn > 3.0,
+    check("adhesion_torn_off_displacement_cells", torn > 3.0, f"{torn:.3g}",
           f"> 3 over {steps} steps at u = {u_high:g}")
     # Drag of the held particle once the flow is steady (second half of the run).
     late = [r["fx"] for r in rows_low if r["Step"] >= steps // 2]
@@ -99,33 +44,32 @@ def case_adhesion(args, work):
     print(f"INFO held drag {drag:.4g} at u = {u_low:g} ({drag / u_low:.4g} per inlet velocity), "
           f"N = {normal:.4g}, mu N = {mu * normal:.4g}, adhesion limit 0.03 ka R^2 = "
           f"{0.03 * ka * radius ** 2:.4g} (not in contact), predicted tear-off u* = {threshold:.4g}")
-    check("adhesion_predicted_threshold_between_runs", f"{threshold:.3g}",
-          2.0 * u_low < threshold < u_high / 2.0,
-          f"between 2 u_low = {2 * u_low:g} and u_high / 2 = {u_high / 2:g}")
+    check("adhesion_predicted_threshold_between_runs", 2.0 * u_low < threshold < u_high / 2.0,
+          f"{threshold:.3g}", f"between 2 u_low = {2 * u_low:g} and u_high / 2 = {u_high / 2:g}")
     _, below = displacement(threshold / 1.5)
     _, above = displacement(threshold * 1.5)
-    check("adhesion_held_at_threshold_over_1.5", f"{below:.3g}", abs(below) < 0.05,
+    check("adhesion_held_at_threshold_over_1.5", abs(below) < 0.05, f"{below:.3g}",
           f"|dx| < 0.05 cells at u = u*/1.5 = {threshold / 1.5:.4g}")
-    check("adhesion_slides_at_threshold_times_1.5", f"{above:.3g}", above > 0.05,
+    check("adhesion_slides_at_threshold_times_1.5", above > 0.05, f"{above:.3g}",
           f"dx > 0.05 cells at u = 1.5 u* = {threshold * 1.5:.4g}")
 
 
-def case_clog(args, work):
+def case_clog(h):
     """Four particles with strong adhesion and cohesion (ka = kc = 2) jam in the mouth of a
     pore narrower than two diameters: the pressure loss must rise well above its
     particle-free value and the fix must count them as deposited."""
-    out = liggghts(args, "in.clog", {"clean_steps": 100000, "steps": 150000,
-                                     "restart_read": "", "restart_write": ""}, work)[1]
+    out = h.run("in.clog", {"clean_steps": 100000, "steps": 150000,
+                            "restart_read": "", "restart_write": ""}).output
     clean = float(next(l.split()[1] for l in out.splitlines() if l.startswith("CLEAN_PRESSURE")))
-    last = thermo(out)[-1]
+    last = thermo_rows(out)[-1]
     final = last["p"]
-    check("clog_pressure_rise", f"{final / clean:.3g}", final / clean > 2.0,
+    check("clog_pressure_rise", final / clean > 2.0, f"{final / clean:.3g}",
           f"pressure loss {final:.4g} vs particle-free {clean:.4g}: ratio > 2")
-    check("clog_deposited_count", f"{last['pore[7]']:.0f}", last["pore[7]"] > 0,
+    check("clog_deposited_count", last["pore[7]"] > 0, f"{last['pore[7]']:.0f}",
           "> 0 particles deposited (in the pore's cylinder, bonded, slower than 10 % of u)")
 
 
-def case_parallel(args, work):
+def case_parallel(h):
     """Two particles head for the middle of the lattice, where 2 ranks split the fluid and the
     particles (processors 2 1 1, ranks meet at x = 15); particle 1 crosses it. Pressure loss,
     hydrodynamic force and positions must equal the serial run to round-off, before and after a
@@ -133,40 +77,42 @@ def case_parallel(args, work):
     node uncovered next to the boundary was refilled from one-step-old halo densities and the
     runs drifted apart by 1e-7 after the crossing.)"""
     variables = {"steps": 200000}
-    serial = thermo(liggghts(args, "in.transit", dict(variables, px=1), work)[1])
-    split = thermo(liggghts(args, "in.transit", dict(variables, px=2), work, ranks=2)[1])
+    serial = thermo_rows(h.run("in.transit", dict(variables, px=1)).output)
+    split = thermo_rows(h.run("in.transit", dict(variables, px=2), ranks=2).output)
     crossed = any(r["x1"] > 15.0 for r in serial)
     check("parallel_particle_crossed_the_rank_boundary", crossed, crossed, "x1 > 15 at some step")
-    check("parallel_same_rows", f"{len(split)} vs {len(serial)}", len(split) == len(serial) > 10,
+    check("parallel_same_rows", len(split) == len(serial) > 10, f"{len(split)} vs {len(serial)}",
           "same number of thermo rows (> 10)")
     before = [i for i, r in enumerate(serial) if max(r["x1"], r["x2"]) < 14.5]
     for column in ("p", "fx", "x1", "y2"):
         # Relative to the column's largest magnitude: the force passes through zero.
         scale = max(abs(r[column]) for r in serial)
         early = max(abs(serial[i][column] - split[i][column]) for i in before) / scale
-        check(f"parallel_max_difference_{column}_before_boundary", f"{early:.3g}", early < 1e-10,
+        check(f"parallel_max_difference_{column}_before_boundary", early < 1e-10, f"{early:.3g}",
               f"< 1e-10 of its largest value over the {len(before)} rows with both centres at x < 14.5")
     for column in ("p", "x1", "y2", "fx"):
         scale = max(abs(r[column]) for r in serial)
         worst = max(abs(a[column] - b[column]) for a, b in zip(serial, split)) / scale
-        check(f"parallel_max_difference_{column}", f"{worst:.3g}", worst < 1e-9,
+        check(f"parallel_max_difference_{column}", worst < 1e-9, f"{worst:.3g}",
               "< 1e-9 of its largest value over the whole run (round-off: sums in another order)")
 
 
-def case_restart(args, work):
+def case_restart(h):
     """write_restart + read_restart in a second process continue as if never stopped."""
     common = {"clean_steps": 100000, "restart_read": ""}
-    whole = thermo(liggghts(args, "in.clog", dict(common, steps=40000, restart_write=""), work)[1])
-    liggghts(args, "in.clog", dict(common, steps=20000, restart_write="write_restart clog.restart"), work)
-    second = thermo(liggghts(args, "in.restart_b", {"restart_file": "clog.restart", "steps": 20000}, work)[1])
+    whole = thermo_rows(h.run("in.clog", dict(common, steps=40000, restart_write="")).output)
+    # The second half runs in the folder where the first half wrote its restart file.
+    first = h.run("in.clog", dict(common, steps=20000, restart_write="write_restart clog.restart"))
+    second = thermo_rows(h.run("in.restart_b", {"restart_file": "clog.restart", "steps": 20000},
+                               cwd=first.work).output)
     a, b = whole[-1], second[-1]
-    check("restart_same_final_step", b["Step"], a["Step"] == b["Step"], f"== {a['Step']:.0f}")
-    check("restart_same_deposited_count", f"{b['pore[7]']:.0f}", a["pore[7]"] == b["pore[7]"],
+    check("restart_same_final_step", a["Step"] == b["Step"], b["Step"], f"== {a['Step']:.0f}")
+    check("restart_same_deposited_count", a["pore[7]"] == b["pore[7]"], f"{b['pore[7]']:.0f}",
           f"== {a['pore[7]']:.0f} (uninterrupted run)")
     # Not bit-identical: the wall's tangential friction springs restart from zero (documented).
     for column, bound in (("p", 1e-6), ("x1", 1e-6), ("z5", 1e-6), ("pore[14]", 1e-3)):
-        diff = relative(a[column], b[column])
-        check(f"restart_relative_difference_{column}", f"{diff:.3g}", diff < bound, f"< {bound:g}")
+        diff = relative_difference(a[column], b[column])
+        check(f"restart_relative_difference_{column}", diff < bound, f"{diff:.3g}", f"< {bound:g}")
 
 
 BAD = "scene pore inlet 6 free 4 length 14 outlet 6 width 20 diameter 15"
@@ -200,39 +146,25 @@ BAD_CASES = [  # (fix line, second line, boundary "x yz", words the error must c
 ]
 
 
-def case_bad_arguments(args, work):
+def case_bad_arguments(h):
     """Every bad input stops within 20 s with a LIGGGHTS ERROR naming the keyword (and the
     range), a non-zero exit, no crash (signal) and no NaN anywhere in the output."""
     for line, line2, boundary, words in BAD_CASES:
         bx, bnd = boundary.split()
         name = f"bad_arguments[{line2 or line} | boundary {bx} {bnd} {bnd}]"
         try:
-            code, out = liggghts(args, "in.bad", {"fixline": line, "fixline2": line2, "bx": bx, "bnd": bnd},
-                                 work, expect_ok=False, timeout=20)
+            run = h.run("in.bad", {"fixline": line, "fixline2": line2, "bx": bx, "bnd": bnd},
+                        expect_error=True, timeout=20)
         except subprocess.TimeoutExpired:
-            check(name, "timeout", False, "an error within 20 s")
+            check(name, False, "timeout", "an error within 20 s")
             continue
-        error = next((l for l in out.splitlines() if l.startswith("ERROR")), "")
+        code, out = run.code, run.output
+        error = error_line(out)
         crashed = code < 0 or "Segmentation fault" in out or "signal" in out.lower()
-        has_nan = re.search(r"\bnan\b", out, re.IGNORECASE) is not None
-        ok = code != 0 and not crashed and not has_nan and error and all(w in error for w in words)
-        check(name, f"exit {code}, {error[:170]!r}", ok,
-              f"ERROR naming {words}, exit != 0, no crash, no NaN")
-
-
-def main():
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--driver", required=True)
-    parser.add_argument("--scripts", required=True)
-    parser.add_argument("--mpirun", default="mpirun")
-    parser.add_argument("case")
-    args = parser.parse_args()
-    args.scripts = os.path.abspath(args.scripts)
-    with tempfile.TemporaryDirectory(prefix=f"coupled_{args.case}_") as work:
-        globals()[f"case_{args.case}"](args, work)
-    if FAILURES:
-        sys.exit(f"{len(FAILURES)} check(s) failed: {', '.join(FAILURES)}")
+        ok = code != 0 and not crashed and not has_nan(out) and error and all(w in error for w in words)
+        check(name, ok, f"exit {code}, {error[:170]!r}", f"ERROR naming {words}, exit != 0, no crash, no NaN")
 
 
 if __name__ == "__main__":
-    main()
+    main({"adhesion": case_adhesion, "clog": case_clog, "parallel": case_parallel,
+          "restart": case_restart, "bad_arguments": case_bad_arguments}, __doc__)

@@ -1,8 +1,9 @@
 // Pore diagnostics: deposited volume and length, particle plane crossings.
 #include <gtest/gtest.h>
 
+#include "cases/serial_flow.h"
 #include "coupling/diagnostics/pore_diagnostics.h"
-#include "sphere_cases.h"
+#include "coupling/sphere_coupling.h"
 
 using namespace coupling;
 
@@ -21,10 +22,10 @@ TEST(Diagnostics, DepositedVolumeCountsBondedSlowParticlesInThePore) {
   pore.centre = {5, 5};
   pore.diameter = 8;
   const Deposition d = deposited(p.view(), bonded, pore, DepositionCriteria{}, lbm::Communicator{});
-  const double v = 4.0 / 3.0 * sphere_cases::kPi * 8.0;
+  const double v = 4.0 / 3.0 * cases::kPi * 8.0;
   EXPECT_EQ(d.count, 1);
   EXPECT_NEAR(d.volume, v, 1e-12);
-  EXPECT_NEAR(d.length, v / (sphere_cases::kPi * 16.0), 1e-12);
+  EXPECT_NEAR(d.length, v / (cases::kPi * 16.0), 1e-12);
 }
 
 TEST(Diagnostics, PlaneCrossingsAreCountedWithDirection) {
@@ -38,7 +39,7 @@ TEST(Diagnostics, PlaneCrossingsAreCountedWithDirection) {
   p.set_position(2, {39.0, 0, 0});  // periodic wrap, ignored
   auto c = counter.update(p.view(), 40.0, lbm::Communicator{});
   EXPECT_EQ(c.count, 1);
-  EXPECT_NEAR(c.volume, 4.0 / 3.0 * sphere_cases::kPi, 1e-12);
+  EXPECT_NEAR(c.volume, 4.0 / 3.0 * cases::kPi, 1e-12);
   p.set_position(0, {9.0, 0, 0});   // back
   p.set_position(1, {9.9, 0, 0});   // back
   EXPECT_EQ(counter.update(p.view(), 40.0, lbm::Communicator{}).count, -2);

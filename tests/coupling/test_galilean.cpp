@@ -7,7 +7,8 @@
 #include <cstdio>
 #include <vector>
 
-#include "sphere_cases.h"
+#include "cases/serial_flow.h"
+#include "coupling/sphere_coupling.h"
 
 using namespace coupling;
 using lbm::MovingWallScheme;
@@ -15,7 +16,7 @@ using lbm::MovingWallScheme;
 namespace {
 std::vector<double> force_history(bool moving, MovingWallScheme scheme, MomentumExchange method,
                                   int steps, double U) {
-  auto solver = sphere_cases::make_solver({32, 16, 16}, {true, true, true});
+  auto solver = cases::make_solver({32, 16, 16}, {true, true, true});
   solver->initialise_equilibrium(1.0, {moving ? 0.0 : -U, 0.0, 0.0});
   ParticleSet particles;
   const Vec3 start{8.3, 7.8, 8.1};
@@ -64,7 +65,7 @@ Comparison compare(MovingWallScheme scheme, MomentumExchange method) {
 }  // namespace
 
 TEST(GalileanInvariance, MovingSphereFeelsTheSameDragAsFixedSphereInMovingFluid) {
-  sphere_cases::Stopwatch watch;
+  cases::Stopwatch watch;
   const Comparison c = compare(MovingWallScheme::kMeiLuoShyy, MomentumExchange::kGalileanInvariant);
   std::printf("Galilean (MLS, Wen et al. momentum exchange), d = 8, U = 0.02, 8 cells travelled: "
               "mean drag %.4e, moving vs fixed %+.2f %%, rms fluctuation %.2f %%, %.2f s\n",

@@ -1,14 +1,15 @@
 // Lubrication: the correction law itself, and the total force (lattice + lubrication) on a
-// sphere approaching a wall and on two approaching spheres against Brenner (1961) /
-// the two-sphere values in REFERENCES.md.
+// sphere approaching a wall (cases/sphere_wall_approach.h, shared with examples/accuracy)
+// and on two approaching spheres against Brenner (1961) / the two-sphere values in
+// REFERENCES.md.
 #include <gtest/gtest.h>
 
 #include <cstdio>
 #include <cstdlib>
 #include <vector>
 
+#include "cases/sphere_wall_approach.h"
 #include "coupling/lubrication/lubrication.h"
-#include "sphere_cases.h"
 
 using namespace coupling;
 
@@ -19,7 +20,8 @@ TEST(Lubrication, LawIsZeroAtTheCutoffAndClampedAtTheRoughness) {
   EXPECT_DOUBLE_EQ(lub.magnitude(R, p.cutoff, v, R), 0.0);
   EXPECT_DOUBLE_EQ(lub.magnitude(R, 1.0, v, R), 0.0);
   const double h = 0.2;
-  EXPECT_NEAR(lub.magnitude(R, h, v, R), 6 * sphere_cases::kPi * mu * R * R * v * (1 / h - 1 / p.cutoff), 1e-14);
+  EXPECT_NEAR(lub.magnitude(R, h, v, R), 6 * cases::kPi * mu * R * R * v * (1 / h - 1 / p.cutoff),
+              1e-14);
   EXPECT_DOUBLE_EQ(lub.magnitude(R, 1e-5, v, R), lub.magnitude(R, 0.01 * R, v, R));
   // Pair: equal and opposite, repulsive when approaching; a = R/2 for equal spheres.
   const Vec3 Fi = lub.pair_force(R, R, {2 * R + h, 0, 0}, {v, 0, 0}, {-v, 0, 0});
@@ -33,68 +35,33 @@ TEST(Lubrication, LawIsZeroAtTheCutoffAndClampedAtTheRoughness) {
   EXPECT_LT(lub.wall_force(R, {0, +v, 0}, wall({0, R - 0.5 + h, 0}))[1], 0.0);
 }
 
-namespace {
-struct Sample {
-  double delta_over_a, lambda;
-};
-
-// lambda at a target delta/a from a history sorted by decreasing gap (5-step average).
-double lambda_at(const std::vector<Sample>& s, double target) {
-  for (std::size_t i = 2; i + 2 < s.size(); ++i)
-    if (s[i].delta_over_a <= target) {
-      double sum = 0.0;
-      for (std::size_t k = i - 2; k <= i + 2; ++k) sum += s[k].lambda;
-      return sum / 5.0;
-    }
-  return 0.0;
-}
-}  // namespace
-
 TEST(Lubrication, SphereApproachingAWallFollowsBrenner) {
-  sphere_cases::Stopwatch watch;
-  const double R = 4.0, U = 0.004, mu = 1.0 / 6.0;
-  auto solver = sphere_cases::make_solver({24, 28, 24}, {true, false, true});
-  ParticleSet particles;
-  const double y0 = 11.7;  // gap 8.2 cells to the half-way wall at y = -0.5
-  particles.add(1, {11.6, y0, 12.3}, {0, -U, 0}, R);
-  SphereCoupling coupling(*solver);
-  LubricationCorrection lub(LubricationParameters{});
-  const auto wall = plane_wall({0, -0.5, 0}, {0, 1, 0});
-  const PeriodicBox box = PeriodicBox::from(solver->decomposition());
-  std::vector<Sample> history;
-  for (int t = 0;; ++t) {
-    const double y = y0 - U * t;
-    const double gap = y + 0.5 - R;
-    if (gap < 0.005 * R) break;
-    particles.set_position(0, {11.6, y, 12.3});
-    coupling.step(particles.view());
-    double F[3] = {0, 0, 0};
-    lub.add_forces(particles.view(), box, wall, F);
-    const double total = coupling.force(0)[1] + F[1];
-    history.push_back({gap / R, total / (6 * sphere_cases::kPi * mu * R * U)});
-  }
-  // Brenner (1961), REFERENCES.md.
-  const double deltas[] = {1.0, 0.5, 0.2, 0.1, 0.05, 0.02, 0.01};
-  const double brenner[] = {2.1255, 3.2054, 6.3409, 11.459, 21.586, 51.761, 101.90};
-  const double lambda_ref = lambda_at(history, 1.0);
-  for (int i = 0; i < 7; ++i) {
-    const double lambda = lambda_at(history, deltas[i]);
-    const double increase = lambda - lambda_ref, increase_ref = brenner[i] - brenner[0];
-    std::printf("sphere-wall d=8 delta/a=%.2f: lambda %.3f (Brenner %.3f), increase over delta=a "
-                "%.3f (Brenner %.3f)\n", deltas[i], lambda, brenner[i], increase, increase_ref);
+  cases::Stopwatch watch;
+  // d = 8: box 24 x 28 x 24, U = 0.004 (cases/sphere_wall_approach.h).
+  const std::vector<cases::LambdaSample> history = cases::sphere_approaching_wall(8).corrected;
+  const double lambda_ref = cases::lambda_at(history, 1.0);
+  for (int i = 0; i < cases::kBrennerPoints; ++i) {
+    const double lambda = cases::lambda_at(history, cases::kBrennerDelta[i]);
+    const double increase = lambda - lambda_ref;
+    const double increase_ref = cases::kBrennerLambda[i] - cases::kBrennerLambda[0];
+    std::printf(
+        "sphere-wall d=8 delta/a=%.2f: lambda %.3f (Brenner %.3f), increase over delta=a "
+        "%.3f (Brenner %.3f)\n",
+        cases::kBrennerDelta[i], lambda, cases::kBrennerLambda[i], increase, increase_ref);
     // Measured (d = 8, box 24x28x24, U = 0.004, Re = 0.19): lambda/lambda_Brenner - 1 =
     // +8.6 %, +0.5 %, -10.7 %, -8.8 %, -7.5 %, -4.3 %, -7.8 % for delta/a = 1 ... 0.01
     // (finite box and unsteadiness at large gaps, one-cell gap resolution near h_c):
     // bound 15 %.
-    EXPECT_NEAR(lambda / brenner[i], 1.0, 0.15) << "delta/a = " << deltas[i];
+    EXPECT_NEAR(lambda / cases::kBrennerLambda[i], 1.0, 0.15)
+        << "delta/a = " << cases::kBrennerDelta[i];
   }
   std::printf("sphere-wall: %zu steps, %.2f s\n", history.size(), watch.seconds());
 }
 
 TEST(Lubrication, TwoSpheresApproachingFollowTheSqueezeLaw) {
-  sphere_cases::Stopwatch watch;
+  cases::Stopwatch watch;
   const double R = 4.0, U = 0.004, mu = 1.0 / 6.0;
-  auto solver = sphere_cases::make_solver({56, 24, 24}, {true, true, true});
+  auto solver = cases::make_solver({56, 24, 24}, {true, true, true});
   ParticleSet particles;
   const double h0 = 8.2, xc = 28.1;
   particles.add(1, {xc - R - 0.5 * h0, 11.7, 12.2}, {U, 0, 0}, R);
@@ -102,7 +69,7 @@ TEST(Lubrication, TwoSpheresApproachingFollowTheSqueezeLaw) {
   SphereCoupling coupling(*solver);
   LubricationCorrection lub(LubricationParameters{});
   const PeriodicBox box = PeriodicBox::from(solver->decomposition());
-  std::vector<Sample> history;
+  std::vector<cases::LambdaSample> history;
   for (int t = 0;; ++t) {
     const double h = h0 - 2 * U * t;
     if (h < 2 * 0.005 * R) break;
@@ -112,9 +79,10 @@ TEST(Lubrication, TwoSpheresApproachingFollowTheSqueezeLaw) {
     double F[6] = {0, 0, 0, 0, 0, 0};
     lub.add_forces(particles.view(), box, nullptr, F);
     const double total = -(coupling.force(0)[0] + F[0]);
-    history.push_back({0.5 * h / R, total / (6 * sphere_cases::kPi * mu * R * U)});
+    history.push_back({0.5 * h / R, total / (6 * cases::kPi * mu * R * U)});
   }
-  const double l1 = lambda_at(history, 1.0), l01 = lambda_at(history, 0.1), l001 = lambda_at(history, 0.01);
+  const double l1 = cases::lambda_at(history, 1.0), l01 = cases::lambda_at(history, 0.1);
+  const double l001 = cases::lambda_at(history, 0.01);
   const double increase = l001 - l01, increase_ref = 28.114 - 4.6255;
   std::printf("two spheres d=8: lambda(delta/a=1) %.3f, (0.1) %.3f (ref 4.6255), (0.01) %.3f (ref 28.114); "
               "increase 0.1->0.01 %.3f (ref %.3f); %zu steps, %.2f s\n",

@@ -3,10 +3,11 @@
 
 #include <cstdio>
 
+#include "cases/serial_flow.h"
 #include "coupling/boundary/sphere_links.h"
 #include "coupling/mapping/sphere_mapping.h"
+#include "coupling/sphere_coupling.h"
 #include "lbm/d3q19.h"
-#include "sphere_cases.h"
 
 using namespace coupling;
 
@@ -22,14 +23,14 @@ TEST(SphereMapping, LinkFractionIsTheExactIntersection) {
 }
 
 TEST(SphereMapping, CoveredNodesAndLinksOfOneSphere) {
-  auto solver = sphere_cases::make_solver({16, 16, 16}, {true, true, true});
+  auto solver = cases::make_solver({16, 16, 16}, {true, true, true});
   ParticleSet particles;
   const double R = 4.0;
   particles.add(1, {7.3, 8.1, 7.7}, {0, 0, 0}, R);
   SphereCoupling coupling(*solver);
   coupling.map_and_refill(particles.view());
   const std::size_t covered = coupling.mapping().moving_cells().size();
-  const double volume = 4.0 / 3.0 * sphere_cases::kPi * R * R * R;
+  const double volume = 4.0 / 3.0 * cases::kPi * R * R * R;
   std::printf("R = 4: %zu covered nodes, sphere volume %.1f\n", covered, volume);
   EXPECT_NEAR(double(covered), volume, 0.06 * volume);
   SphereLinks links;
@@ -45,7 +46,7 @@ TEST(SphereMapping, CoveredNodesAndLinksOfOneSphere) {
 }
 
 TEST(SphereMapping, PeriodicWrapCoversGhostsAndMovesCleanly) {
-  auto solver = sphere_cases::make_solver({12, 12, 12}, {true, true, true});
+  auto solver = cases::make_solver({12, 12, 12}, {true, true, true});
   ParticleSet particles;
   particles.add(1, {0.2, 6.0, 6.0}, {0, 0, 0}, 3.0);
   SphereCoupling coupling(*solver);

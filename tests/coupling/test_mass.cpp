@@ -5,13 +5,14 @@
 
 #include <cstdio>
 
-#include "sphere_cases.h"
+#include "cases/serial_flow.h"
+#include "coupling/sphere_coupling.h"
 
 using namespace coupling;
 
 TEST(MassConservation, MovingSpheresDriftIsSmall) {
-  sphere_cases::Stopwatch watch;
-  auto solver = sphere_cases::make_solver({24, 24, 24}, {true, true, true});
+  cases::Stopwatch watch;
+  auto solver = cases::make_solver({24, 24, 24}, {true, true, true});
   ParticleSet particles;
   const Vec3 x0{6.3, 7.1, 8.4}, x1{17.2, 16.6, 15.3};
   const Vec3 v0{0.02, 0.01, -0.005}, v1{-0.015, 0.005, 0.012};
@@ -19,7 +20,7 @@ TEST(MassConservation, MovingSpheresDriftIsSmall) {
   particles.add(2, x1, v1, 3.0);
   SphereCoupling coupling(*solver);
   coupling.map_and_refill(particles.view());
-  const double m0 = sphere_cases::fluid_mass(*solver);
+  const double m0 = cases::fluid_mass(*solver);
   const int steps = 1000;
   double covered = 0.0, refilled = 0.0, max_step_change = 0.0;
   for (int t = 0; t < steps; ++t) {
@@ -32,7 +33,7 @@ TEST(MassConservation, MovingSpheresDriftIsSmall) {
     refilled += coupling.last_mass_change().refilled;
     max_step_change = std::max(max_step_change, std::abs(coupling.last_mass_change().net()));
   }
-  const double m1 = sphere_cases::fluid_mass(*solver);
+  const double m1 = cases::fluid_mass(*solver);
   const double drift = (m1 - m0) / m0 / steps;
   std::printf("mass: %d steps, relative drift %.2e per step (total %+.3e of %.1f); covered %.2f, "
               "refilled %.2f (mean per step %.3f / %.3f), largest net change in one step %.3f; %.2f s\n",

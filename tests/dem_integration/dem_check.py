@@ -1,135 +1,81 @@
 #!/usr/bin/env python3
 """Physics checks of the liggghts-lbm styles: runs one input script and compares the thermo
-output with the paper's analytic values. Prints the measured figures; exits 1 on failure.
+output with the paper's analytic values. Prints each measured figure and its bound
+(tests/harness/liggghts_run.py); exits 1 on failure.
 
-usage: dem_check.py --driver PATH --scripts DIR CASE
+usage: dem_check.py --driver PATH --scripts DIR [--mpirun mpirun] CASE
 cases: bond_hold, bond_break, restitution, adhesion_hold, adhesion_break, tilt_stick,
        tilt_slide, parallel_equal
 """
-import argparse
 import math
 import os
-import subprocess
-import sys
-import tempfile
+from collections import namedtuple
+
+from liggghts_run import at_step, check, main, thermo_rows
 
 R = 3.5
 K_C = K_A = 0.1
 F_COHESION_MAX = 0.03 * K_C * R * R  # paper Eq. 2 at h = 0.03 (Ri+Rj): 0.03 kc Ri Rj
 F_ADHESION_MAX = 0.03 * K_A * R * R  # paper Eq. 4 at h = 0.03 Ri: 0.03 ka R^2
 
-
-def run(driver, scripts, script, variables, ranks=1):
-    work = tempfile.mkdtemp(prefix="dem_check_")
-    cmd = [driver, "-in", os.path.join(scripts, script), "-log", os.path.join(work, "log"),
-           "-var", "dir", scripts]
-    for name, value in variables.items():
-        cmd += ["-var", name, str(value)]
-    if ranks > 1:
-        cmd = ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", str(ranks)] + cmd
-    out = subprocess.run(cmd, cwd=work, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                         text=True, errors="replace", timeout=120)
-    if out.returncode != 0 or "ERROR" in out.stdout:
-        print(out.stdout[-3000:])
-        sys.exit("liggghts-lbm failed")
-    return out.stdout, work
+# A short-range attraction loaded by a force ramped to `load_factor` x its peak and held:
+# the script, the thermo column counting the contacts, the gap bound after settling, the
+# peak force and its formula, the slope of the force in the gap (F = slope h) and its
+# formula, and whether the pair must also be seen to separate after the break.
+Attraction = namedtuple("Attraction", "name script column settled_gap peak peak_law slope "
+                                      "slope_law separates")
+BOND = Attraction("bond", "in.bond", "bonds", 0.21, F_COHESION_MAX, "0.03 kc Ri Rj",
+                  K_C * R / 2, "kc R/2", True)  # F = h kc RiRj/(Ri+Rj)
+ADHESION = Attraction("adhesion", "in.wall_adhesion", "wall[1]", 0.105, F_ADHESION_MAX,
+                      "0.03 ka R^2", K_A * R, "ka R", False)  # F = h ka R
 
 
-def thermo_rows(output):
-    """All thermo rows of all runs, as dicts keyed by the column names."""
-    rows, header = [], None
-    for line in output.splitlines():
-        words = line.split()
-        if words and words[0] == "Step":
-            header = words
-            continue
-        if header and words and words[0] == "Loop":
-            header = None
-            continue
-        if header and len(words) == len(header):
-            try:
-                values = [float(w) for w in words]
-            except ValueError:
-                continue
-            rows.append(dict(zip(header, values)))
-    return rows
-
-
-def check(condition, message):
-    print(("PASS " if condition else "FAIL ") + message)
-    return condition
-
-
-def bond(args, load_factor):
-    out, _ = run(args.driver, args.scripts, "in.bond", {"load_factor": load_factor})
-    rows = thermo_rows(out)
-    settled = [r for r in rows if r["Step"] == 20000][0]
-    ok = check(settled["bonds"] == 1 and abs(settled["gap"]) < 0.21,
-               f"bond formed during settling: bonds={settled['bonds']:.0f} gap={settled['gap']:.4g}")
+def hold_or_break(h, attraction, load_factor):
+    """Below the peak (load_factor < 1) the contact holds at the static gap h = F / slope;
+    above it, it breaks at the peak force."""
+    a = attraction
+    rows = thermo_rows(h.run(a.script, {"load_factor": load_factor}).output)
+    settled = at_step(rows, 20000)
+    check(f"{a.name}_formed_during_settling",
+          settled[a.column] == 1 and abs(settled["gap"]) < a.settled_gap,
+          f"{settled[a.column]:.0f} contact(s), gap {settled['gap']:.4g}",
+          f"1 contact, |gap| < {a.settled_gap}")
     loaded = [r for r in rows if r["Step"] > 20000]
     if load_factor < 1.0:
-        ok &= check(all(r["bonds"] == 1 for r in loaded),
-                    f"bond holds at {load_factor} x the peak cohesive force {F_COHESION_MAX:.5g}")
-        # Static equilibrium in the cohesive range: F = h kc RiRj/(Ri+Rj) -> h = F / (kc R/2).
+        check(f"{a.name}_holds", all(r[a.column] == 1 for r in loaded),
+              f"{sum(r[a.column] != 1 for r in loaded)} of {len(loaded)} loaded rows without it",
+              f"none, at {load_factor} x the peak force {a.peak_law} = {a.peak:.5g}")
+        # Static equilibrium in the attractive range: F = slope h -> h = F / slope.
         held = [r["gap"] for r in loaded if r["Step"] >= 52000]
-        predicted = load_factor * F_COHESION_MAX / (K_C * R / 2)
+        predicted = load_factor * a.peak / a.slope
         mean_gap = sum(held) / len(held)
-        ok &= check(abs(mean_gap - predicted) <= 0.05 * predicted,
-                    f"held gap {mean_gap:.5g} vs predicted {predicted:.5g} (bound 5%)")
-    else:
-        broken = [r for r in loaded if r["bonds"] == 0]
-        ok &= check(len(broken) > 0, "bond breaks")
-        if broken:
-            load = broken[0]["load"]
-            err = (load - F_COHESION_MAX) / F_COHESION_MAX
-            ok &= check(abs(err) <= 0.02,
-                        f"break load {load:.5g} vs predicted 0.03 kc Ri Rj = {F_COHESION_MAX:.5g} "
-                        f"(error {100 * err:+.2f}%, bound 2%)")
-            # (They then leave the box; the largest gap seen shows they moved apart.)
-            widest = max(r["gap"] for r in broken)
-            ok &= check(widest > 1.0, f"particles separate after the break: gap reaches {widest:.3g}")
-    return ok
+        check(f"{a.name}_held_gap", abs(mean_gap - predicted) <= 0.05 * predicted,
+              f"{mean_gap:.5g}", f"within 5 % of h = F/({a.slope_law}) = {predicted:.5g}")
+        return
+    broken = [r for r in loaded if r[a.column] == 0]
+    check(f"{a.name}_breaks", len(broken) > 0, f"{len(broken)} loaded rows without it", "> 0")
+    if not broken:
+        return
+    load = broken[0]["load"]
+    err = (load - a.peak) / a.peak
+    check(f"{a.name}_break_load", abs(err) <= 0.02, f"{load:.5g} (error {100 * err:+.2f} %)",
+          f"within 2 % of {a.peak_law} = {a.peak:.5g}")
+    if a.separates:
+        # (They then leave the box; the largest gap seen shows they moved apart.)
+        widest = max(r["gap"] for r in broken)
+        check(f"{a.name}_separates_after_break", widest > 1.0, f"largest gap {widest:.3g}", "> 1")
 
 
-def restitution(args):
-    ok = True
+def restitution(h):
     for zeta in (0.25, 0.5):
-        out, _ = run(args.driver, args.scripts, "in.collision", {"zeta": zeta})
-        rows = thermo_rows(out)
+        rows = thermo_rows(h.run("in.collision", {"zeta": zeta}).output)
         e = rows[-1]["vrel"] / -rows[0]["vrel"]
         expected = math.exp(-math.pi * zeta / math.sqrt(1 - zeta * zeta))
         err = (e - expected) / expected
-        ok &= check(abs(err) <= 0.01, f"zeta {zeta}: restitution {e:.5f} vs analytic {expected:.5f} "
-                                      f"(error {100 * err:+.3f}%, bound 1%)")
-        ok &= check(rows[-1]["bonds"] == 0, "no bond without cohesion after the collision")
-    return ok
-
-
-def adhesion(args, load_factor):
-    out, _ = run(args.driver, args.scripts, "in.wall_adhesion", {"load_factor": load_factor})
-    rows = thermo_rows(out)
-    settled = [r for r in rows if r["Step"] == 20000][0]
-    ok = check(settled["wall[1]"] == 1 and abs(settled["gap"]) < 0.105,
-               f"particle adheres: contacts={settled['wall[1]']:.0f} gap={settled['gap']:.4g}")
-    loaded = [r for r in rows if r["Step"] > 20000]
-    if load_factor < 1.0:
-        ok &= check(all(r["wall[1]"] == 1 for r in loaded),
-                    f"holds at {load_factor} x the adhesion limit {F_ADHESION_MAX:.5g}")
-        held = [r["gap"] for r in loaded if r["Step"] >= 52000]
-        predicted = load_factor * F_ADHESION_MAX / (K_A * R)
-        mean_gap = sum(held) / len(held)
-        ok &= check(abs(mean_gap - predicted) <= 0.05 * predicted,
-                    f"held gap {mean_gap:.5g} vs predicted h = F/(ka R) = {predicted:.5g} (bound 5%)")
-    else:
-        off = [r for r in loaded if r["wall[1]"] == 0]
-        ok &= check(len(off) > 0, "particle torn off")
-        if off:
-            load = off[0]["load"]
-            err = (load - F_ADHESION_MAX) / F_ADHESION_MAX
-            ok &= check(abs(err) <= 0.02,
-                        f"tear-off load {load:.5g} vs predicted 0.03 ka R^2 = {F_ADHESION_MAX:.5g} "
-                        f"(error {100 * err:+.2f}%, bound 2%)")
-    return ok
+        check(f"restitution_zeta_{zeta}", abs(err) <= 0.01, f"{e:.5f} (error {100 * err:+.3f} %)",
+              f"within 1 % of exp(-pi zeta / sqrt(1 - zeta^2)) = {expected:.5f}")
+        check(f"no_bond_after_collision_zeta_{zeta}", rows[-1]["bonds"] == 0,
+              f"{rows[-1]['bonds']:.0f} bonds", "0 (no cohesion)")
 
 
 def make_floor(path):
@@ -144,22 +90,20 @@ def make_floor(path):
         f.write(bytes(data))
 
 
-def tilt(args, slide):
+def tilt(h, slide):
     mu, g, mass = 0.3, 1e-5, 2.3 * 4.0 / 3.0 * math.pi * R ** 3
     friction_angle = math.degrees(math.atan(mu))
     angle = friction_angle + (3.0 if slide else -3.0)
-    voxels = os.path.join(tempfile.mkdtemp(prefix="dem_floor_"), "floor.raw")
+    tilted = f"tilt {angle:.2f} deg {'>' if slide else '<'} atan(mu) = {friction_angle:.2f}"
+    voxels = os.path.join(h.work, "floor.raw")
     make_floor(voxels)
-    out, _ = run(args.driver, args.scripts, "in.tilted_wall",
-                 {"voxels": voxels, "angle": angle, "mu": mu})
-    rows = thermo_rows(out)
-    start = [r for r in rows if r["Step"] == 10000][0]
+    rows = thermo_rows(h.run("in.tilted_wall", {"voxels": voxels, "angle": angle, "mu": mu}).output)
+    start = at_step(rows, 10000)
     end = rows[-1]
     overlap = 2.5 + R - start["zpos"]
-    ok = check(abs(overlap - mass * g / 0.1) < 0.01 * mass * g / 0.1,
-               f"settled overlap {overlap:.5g} vs m g / kw = {mass * g / 0.1:.5g} (bound 1%)")
+    check("tilt_settled_overlap", abs(overlap - mass * g / 0.1) < 0.01 * mass * g / 0.1,
+          f"{overlap:.5g}", f"within 1 % of m g / kw = {mass * g / 0.1:.5g}")
     distance = end["xpos"] - start["xpos"]
-    t = end["Step"] - start["Step"]
     theta = math.radians(angle)
     if slide:
         # Acceleration from the velocity after the normal load has adjusted to the tilt
@@ -168,51 +112,36 @@ def tilt(args, slide):
         accel = (steady[-1]["speed"] - steady[0]["speed"]) / (steady[-1]["Step"] - steady[0]["Step"])
         predicted = g * (math.sin(theta) - mu * math.cos(theta))
         err = (accel - predicted) / predicted
-        ok &= check(abs(err) <= 0.01,
-                    f"tilt {angle:.2f} deg > atan(mu) = {friction_angle:.2f}: slides {distance:.4g} "
-                    f"(across {int(distance)} voxels) with acceleration {accel:.6g} vs "
-                    f"g (sin - mu cos) = {predicted:.6g} (error {100 * err:+.3f}%, bound 1%)")
+        check("tilt_slide_acceleration", abs(err) <= 0.01,
+              f"{accel:.6g} (error {100 * err:+.3f} %; slid {distance:.4g} cells, across "
+              f"{int(distance)} voxels)", f"within 1 % of g (sin - mu cos) = {predicted:.6g} at {tilted}")
         # Smooth sliding over the voxel faces: the height does not change.
         heights = [r["zpos"] for r in steady]
-        ok &= check(max(heights) - min(heights) < 1e-6,
-                    f"height variation while sliding {max(heights) - min(heights):.3g} (bound 1e-6)")
+        check("tilt_slide_height_variation", max(heights) - min(heights) < 1e-6,
+              f"{max(heights) - min(heights):.3g}", "< 1e-6")
     else:
         # The tangential spring stretches by m g sin / kt and then holds: no creep.
         spring = mass * g * math.sin(theta) / (0.1 * 2.0 / 7.0)
-        ok &= check(abs(distance) <= 2.0 * spring and abs(end["speed"]) < 1e-7,
-                    f"tilt {angle:.2f} deg < atan(mu) = {friction_angle:.2f}: moved {distance:.3g} "
-                    f"(spring stretch {spring:.3g}, bound 2x), final speed {end['speed']:.2g} (bound 1e-7)")
-    return ok
+        check("tilt_stick", abs(distance) <= 2.0 * spring and abs(end["speed"]) < 1e-7,
+              f"moved {distance:.3g}, final speed {end['speed']:.2g}",
+              f"|moved| <= 2 x the spring stretch {spring:.3g}, |speed| < 1e-7 at {tilted}")
 
 
-def parallel_equal(args):
+def parallel_equal(h):
     """Serial and 2-rank runs of the bond script give the same thermo numbers."""
-    serial, _ = run(args.driver, args.scripts, "in.bond", {"load_factor": 1.2})
-    parallel, _ = run(args.driver, args.scripts, "in.bond", {"load_factor": 1.2}, ranks=2)
-    a, b = thermo_rows(serial), thermo_rows(parallel)
+    a = thermo_rows(h.run("in.bond", {"load_factor": 1.2}).output)
+    b = thermo_rows(h.run("in.bond", {"load_factor": 1.2}, ranks=2).output)
     worst = max(abs(x[k] - y[k]) for x, y in zip(a, b) for k in x)
-    return check(len(a) == len(b) and worst < 1e-9,
-                 f"serial vs 2 ranks: {len(a)} rows, largest difference {worst:.3g} (bound 1e-9)")
-
-
-def main():
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--driver", required=True)
-    parser.add_argument("--scripts", required=True)
-    parser.add_argument("case")
-    args = parser.parse_args()
-    cases = {
-        "bond_hold": lambda: bond(args, 0.95),
-        "bond_break": lambda: bond(args, 1.2),
-        "restitution": lambda: restitution(args),
-        "adhesion_hold": lambda: adhesion(args, 0.95),
-        "adhesion_break": lambda: adhesion(args, 1.2),
-        "tilt_stick": lambda: tilt(args, False),
-        "tilt_slide": lambda: tilt(args, True),
-        "parallel_equal": lambda: parallel_equal(args),
-    }
-    sys.exit(0 if cases[args.case]() else 1)
+    check("serial_vs_2_ranks_largest_difference", len(a) == len(b) and worst < 1e-9,
+          f"{worst:.3g} over {len(a)} vs {len(b)} rows", "< 1e-9, same number of rows")
 
 
 if __name__ == "__main__":
-    main()
+    main({"bond_hold": lambda h: hold_or_break(h, BOND, 0.95),
+          "bond_break": lambda h: hold_or_break(h, BOND, 1.2),
+          "restitution": restitution,
+          "adhesion_hold": lambda h: hold_or_break(h, ADHESION, 0.95),
+          "adhesion_break": lambda h: hold_or_break(h, ADHESION, 1.2),
+          "tilt_stick": lambda h: tilt(h, False),
+          "tilt_slide": lambda h: tilt(h, True),
+          "parallel_equal": parallel_equal}, __doc__)

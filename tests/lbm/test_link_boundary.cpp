@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "flow_cases.h"
+#include "cases/serial_flow.h"
 #include "lbm/collide_stream.h"
 #include "lbm/d3q19.h"
 #include "lbm/input_error.h"
@@ -28,7 +28,7 @@ double couette_error(double q_bottom, double q_top, lbm::MovingWallScheme scheme
   p.tau = 0.8;
   p.magic = 0.25;
   p.periodic = {true, false, true};
-  lbm::FluidSolver solver(g, p, lbm::FlowDrive{}, flow_cases::serial(g, p.periodic));
+  lbm::FluidSolver solver(g, p, lbm::FlowDrive{}, cases::serial_decomposition(g, p.periodic));
   const auto& L = solver.layout();
   std::vector<lbm::BoundaryLink> links;
   for (int k = 0; k < 2; ++k)
@@ -45,8 +45,8 @@ double couette_error(double q_bottom, double q_top, lbm::MovingWallScheme scheme
   for (int s = 0; s < 30000; ++s) step();
   // Walls at y = -q_bottom and y = H - 1 + q_top.
   const double gap = H - 1 + q_top + q_bottom;
-  return flow_cases::relative_l2_error(solver, 0,
-                                       [&](int, int y, int) { return U * (y + q_bottom) / gap; });
+  return cases::relative_l2_error(solver, 0,
+                                  [&](int, int y, int) { return U * (y + q_bottom) / gap; });
 }
 }  // namespace
 
@@ -72,7 +72,7 @@ TEST(LinkBoundary, MomentumExchangeOnRestingWallEqualsShearStress) {
   lbm::FluidParameters p;
   p.tau = 0.8;
   p.periodic = {true, false, true};
-  lbm::FluidSolver solver(g, p, lbm::FlowDrive{}, flow_cases::serial(g, p.periodic));
+  lbm::FluidSolver solver(g, p, lbm::FlowDrive{}, cases::serial_decomposition(g, p.periodic));
   const auto& L = solver.layout();
   std::vector<lbm::BoundaryLink> bottom, top;
   for (int k = 0; k < 2; ++k)

@@ -3,7 +3,7 @@
 
 #include <random>
 
-#include "flow_cases.h"
+#include "cases/serial_flow.h"
 #include "lbm/d3q19.h"
 #include "lbm/pore_scene.h"
 
@@ -16,7 +16,8 @@ TEST(MassConservation, ClosedBoxWithObstaclesAndForcing) {
   p.tau = 0.7;
   p.magic = 0.25;
   p.body_force = {1e-5, 2e-6, 0.0};
-  lbm::FluidSolver solver(g, p, lbm::FlowDrive{}, flow_cases::serial(g, {false, false, false}));
+  lbm::FluidSolver solver(g, p, lbm::FlowDrive{},
+                          cases::serial_decomposition(g, {false, false, false}));
   // Random perturbation of the initial state (non-equilibrium, non-uniform).
   std::mt19937 rng(42);
   std::uniform_real_distribution<double> noise(0.9, 1.1);
@@ -46,13 +47,13 @@ TEST(Checkpoint, ResumedRunMatchesUninterruptedRun) {
   lbm::FlowDrive drive;
   drive.kind = lbm::FlowDrive::kInletVelocity;
   drive.inlet_velocity = 0.02;
-  lbm::FluidSolver reference(g, p, drive, flow_cases::serial(g, p.periodic));
+  lbm::FluidSolver reference(g, p, drive, cases::serial_decomposition(g, p.periodic));
   for (int s = 0; s < 200; ++s) reference.step();
-  lbm::FluidSolver first(g, p, drive, flow_cases::serial(g, p.periodic));
+  lbm::FluidSolver first(g, p, drive, cases::serial_decomposition(g, p.periodic));
   for (int s = 0; s < 120; ++s) first.step();
   const std::string path = ::testing::TempDir() + "fluid.checkpoint";
   lbm::write_checkpoint(first, path);
-  lbm::FluidSolver resumed(g, p, drive, flow_cases::serial(g, p.periodic));
+  lbm::FluidSolver resumed(g, p, drive, cases::serial_decomposition(g, p.periodic));
   lbm::read_checkpoint(resumed, path);
   EXPECT_EQ(resumed.time_step(), 120);
   for (int s = 0; s < 80; ++s) resumed.step();
@@ -60,7 +61,7 @@ TEST(Checkpoint, ResumedRunMatchesUninterruptedRun) {
 
   // A checkpoint of another lattice is refused with a clear message.
   lbm::VoxelGeometry other({6, 8, 8});
-  lbm::FluidSolver wrong(other, p, drive, flow_cases::serial(other, p.periodic));
+  lbm::FluidSolver wrong(other, p, drive, cases::serial_decomposition(other, p.periodic));
   try {
     lbm::read_checkpoint(wrong, path);
     FAIL() << "mismatched checkpoint accepted";

@@ -4,7 +4,7 @@
 
 #include <cstdio>
 
-#include "flow_cases.h"
+#include "cases/serial_flow.h"
 #include "lbm/pore_scene.h"
 
 TEST(OpenBoundary, FluxIsConservedThroughThePoreConstriction) {
@@ -22,8 +22,8 @@ TEST(OpenBoundary, FluxIsConservedThroughThePoreConstriction) {
   lbm::FlowDrive drive;
   drive.kind = lbm::FlowDrive::kInletVelocity;
   drive.inlet_velocity = 0.005;
-  lbm::FluidSolver solver(g, p, drive, flow_cases::serial(g, p.periodic));
-  flow_cases::run_to_steady(solver, 1e-8, 40000, 200);
+  lbm::FluidSolver solver(g, p, drive, cases::serial_decomposition(g, p.periodic));
+  cases::run_to_steady(solver, 1e-8, 40000, 200);
   // The inlet imposes u_in on every node: inflow of mass = rho_in u_in A.
   const double rho_in = lbm::plane_mean_pressure(solver, 0, 0) * 3.0;
   const double inflow = rho_in * drive.inlet_velocity * spec.width * spec.width;
@@ -49,8 +49,8 @@ double pressure_driven_channel_flux_ratio(int H) {
   lbm::FlowDrive drive;
   drive.kind = lbm::FlowDrive::kPressureLoss;
   drive.pressure_loss = 1e-4;
-  lbm::FluidSolver solver(g, p, drive, flow_cases::serial(g, p.periodic));
-  flow_cases::run_to_steady(solver, 1e-10, 100000, 500);
+  lbm::FluidSolver solver(g, p, drive, cases::serial_decomposition(g, p.periodic));
+  cases::run_to_steady(solver, 1e-10, 100000, 500);
   EXPECT_NEAR(lbm::pressure_loss(solver) / drive.pressure_loss, 1.0, 1e-6);
   // G = dp / (nx - 1): the boundary nodes carry the imposed densities.
   const double mu = lbm::TrtParameters::viscosity(1.0);
@@ -76,7 +76,8 @@ TEST(OpenBoundary, DriveTooStrongIsRefusedWithItsRange) {
   drive.kind = lbm::FlowDrive::kInletVelocity;
   drive.inlet_velocity = 0.5;
   try {
-    lbm::FluidSolver solver(g, lbm::FluidParameters{}, drive, flow_cases::serial(g, {false, true, true}));
+    lbm::FluidSolver solver(g, lbm::FluidParameters{}, drive,
+                            cases::serial_decomposition(g, {false, true, true}));
     FAIL() << "inlet velocity 0.5 accepted";
   } catch (const lbm::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("inlet velocity"), std::string::npos);
@@ -91,7 +92,7 @@ TEST(Stability, NanAndRunawayNodesAreReportedWithTheirPlace) {
   lbm::VoxelGeometry g({6, 5, 4});
   lbm::FluidParameters p;
   p.periodic = {true, true, true};
-  lbm::FluidSolver solver(g, p, lbm::FlowDrive{}, flow_cases::serial(g, p.periodic));
+  lbm::FluidSolver solver(g, p, lbm::FlowDrive{}, cases::serial_decomposition(g, p.periodic));
   EXPECT_FALSE(lbm::check_fluid_state(solver, 0.3).found);
   solver.populations().at(1, solver.layout().cell(3, 2, 1)) = std::nan("");
   const auto problem = lbm::check_fluid_state(solver, 0.3);

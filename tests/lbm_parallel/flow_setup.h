@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 
+#include "cases/serial_flow.h"
 #include "lbm/fluid_solver.h"
 #include "lbm/voxel_geometry.h"
 
@@ -56,6 +57,11 @@ inline std::array<double, 4> initial_state(int i, int j, int k) {
   return {1.0 + 0.01 * std::sin(0.7 * i + 0.3 * j) * std::cos(0.5 * k),
           0.01 * std::cos(0.4 * j + 0.2 * k), 0.005 * std::sin(0.6 * i + 0.9 * k),
           0.004 * std::cos(0.8 * i - 0.5 * j)};
+}
+
+// The whole lattice of the case on one rank: the serial run the parallel ones must equal.
+inline lbm::Decomposition serial_decomposition(const FlowCase& c) {
+  return cases::serial_decomposition(c.geometry, c.parameters.periodic);
 }
 
 inline void start(lbm::FluidSolver& solver) { solver.initialise_equilibrium(initial_state); }

@@ -74,10 +74,7 @@ double max_difference(const lbm::FluidSolver& parallel, const lbm::FluidSolver& 
 }
 
 void compare(const FlowCase& c, const Split& split) {
-  lbm::Box global;
-  global.hi = c.geometry.dims();
-  lbm::FluidSolver serial(c.geometry, c.parameters, c.drive,
-                          lbm::Decomposition::serial(global, c.parameters.periodic));
+  lbm::FluidSolver serial(c.geometry, c.parameters, c.drive, serial_decomposition(c));
   lbm::FluidSolver parallel(c.geometry, c.parameters, c.drive, decompose(c, split));
   start(serial);
   start(parallel);
@@ -115,10 +112,7 @@ TEST(OneRankEqualsTwoRanks, BodyForceChannelWithSolidVoxels) {
 // Negative control: the comparison does see a missing halo exchange.
 TEST(OneRankEqualsTwoRanks, WithoutHaloExchangeTheRunsDiffer) {
   const FlowCase c = body_force_channel();
-  lbm::Box global;
-  global.hi = c.geometry.dims();
-  lbm::FluidSolver serial(c.geometry, c.parameters, c.drive,
-                          lbm::Decomposition::serial(global, c.parameters.periodic));
+  lbm::FluidSolver serial(c.geometry, c.parameters, c.drive, serial_decomposition(c));
   lbm::FluidSolver parallel(c.geometry, c.parameters, c.drive, decompose(c, kSplits[0]));
   start(serial);
   start(parallel);

@@ -32,8 +32,7 @@ void write_and_check(int split, const std::string& name) {
   procs[split] = 2;
   lbm::FluidSolver parallel(c.geometry, c.parameters, c.drive,
                             lbm::Decomposition::grid(global, c.parameters.periodic, procs, world));
-  lbm::FluidSolver serial(c.geometry, c.parameters, c.drive,
-                          lbm::Decomposition::serial(global, c.parameters.periodic));
+  lbm::FluidSolver serial(c.geometry, c.parameters, c.drive, serial_decomposition(c));
   start(parallel);
   start(serial);
   for (int s = 0; s < 30; ++s) {

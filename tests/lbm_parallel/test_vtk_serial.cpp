@@ -35,10 +35,7 @@ std::string read_text(const std::filesystem::path& path) {
 
 TEST(VtkSeries, SerialImageRoundTrip) {
   const FlowCase c = body_force_channel();
-  lbm::Box global;
-  global.hi = c.geometry.dims();
-  lbm::FluidSolver solver(c.geometry, c.parameters, c.drive,
-                          lbm::Decomposition::serial(global, c.parameters.periodic));
+  lbm::FluidSolver solver(c.geometry, c.parameters, c.drive, serial_decomposition(c));
   start(solver);
   for (int s = 0; s < 10; ++s) solver.step();
 
@@ -114,10 +111,7 @@ std::vector<std::pair<double, std::string>> pvd_entries(const std::filesystem::p
 // A writer created after a restart continues the series; a fresh run (time 0) restarts it.
 TEST(VtkSeries, ResumedRunContinuesTheSeries) {
   const FlowCase c = body_force_channel();
-  lbm::Box global;
-  global.hi = c.geometry.dims();
-  lbm::FluidSolver solver(c.geometry, c.parameters, c.drive,
-                          lbm::Decomposition::serial(global, c.parameters.periodic));
+  lbm::FluidSolver solver(c.geometry, c.parameters, c.drive, serial_decomposition(c));
   const std::filesystem::path dir = "vtk_resume_out";
   std::filesystem::remove_all(dir);
   {
