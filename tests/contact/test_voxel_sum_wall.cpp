@@ -18,10 +18,10 @@ using namespace contact;
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kRadius = 3.5;     // d = 7 cells
-constexpr double kDensity = 2.3;    // rho_p, fluid density 1
+constexpr double kRadius = 3.5;   // d = 7 cells
+constexpr double kDensity = 2.3;  // rho_p, fluid density 1
 constexpr double kMu = 0.1;
-constexpr double kRange = 0.03;     // adhesion range / R (Eq. 4)
+constexpr double kRange = 0.03;  // adhesion range / R (Eq. 4)
 
 struct Reading {
   const char* name;
@@ -59,8 +59,8 @@ lbm::VoxelGeometry floor_geometry() {
 enum class VoxelShape { cube, sphere };
 
 struct ReferenceContact {
-  Vec3 normal;   // from the voxel to the centre
-  double gap;    // distance minus R
+  Vec3 normal;  // from the voxel to the centre
+  double gap;   // distance minus R
 };
 
 // Distance from `c` (unit cells, origin 0) to voxel (i,j,k): to its cube [i +- 1/2]^3, or to
@@ -267,11 +267,12 @@ int tangential_steps(const Reading& r, const Particle& p) {
 }
 
 // Drives `p` with an external force growing linearly from `from` to `to` over `ramp` steps
-// and then held at `to` for `hold` steps; returns the largest |displacement . axis|.
-double ramp_and_hold(Particle& p, Vec3 axis, double from, double to, int ramp, int hold,
-                     Vec3 base, Vec3 start) {
+// and then held at `to` for `hold` steps; returns the largest |displacement . axis|, and
+// stops once that is beyond 3 cells (gone, for every test here; the floor ends 11 cells on).
+double ramp_and_hold(Particle& p, Vec3 axis, double from, double to, int ramp, int hold, Vec3 base,
+                     Vec3 start) {
   double farthest = 0.0;
-  for (int s = 1; s <= ramp + hold; ++s) {
+  for (int s = 1; s <= ramp + hold && farthest <= 3.0; ++s) {
     const double push = s < ramp ? from + (to - from) * s / ramp : to;
     p.step(base + push * axis);
     farthest = std::max(farthest, std::fabs(dot(p.x - start, axis)));
@@ -285,6 +286,17 @@ double load_for(const Reading& r, int which) {
   return which == 0 ? 0.0 : 0.05 * r.k_a * kRadius * kRadius;
 }
 
+// Runs check(load, reference rest height, settled particle) for each of the two loads.
+template <class Check>
+void for_each_load(const lbm::VoxelGeometry& g, const Reading& r, Check check) {
+  for (int which = 0; which < 2; ++which) {
+    const double load = load_for(r, which);
+    double z_ref = 0.0;
+    Particle p = settled_on_floor(g, r, load, &z_ref);
+    check(load, z_ref, p);
+  }
+}
+
 // Conservative energy of the contacts, each voxel's potential continuous through its range:
 // k_w delta^2 / 2 overlapping, k_a R h^2 / 2 adhering, constant (taken as zero) beyond.
 double contact_energy(const lbm::VoxelGeometry& g, const Reading& r, Vec3 c) {
@@ -296,8 +308,10 @@ double contact_energy(const lbm::VoxelGeometry& g, const Reading& r, Vec3 c) {
       for (int i = int(c.x) - 6; i <= int(c.x) + 6; ++i) {
         if (!g.is_solid(i, j, k)) continue;
         const double gap = reference_contact(c, i, j, k, VoxelShape::cube, 0.0).gap;
-        if (gap < 0.0) energy += 0.5 * r.k_w * gap * gap - beyond;
-        else if (gap <= range) energy += 0.5 * r.k_a * kRadius * gap * gap - beyond;
+        if (gap < 0.0)
+          energy += 0.5 * r.k_w * gap * gap - beyond;
+        else if (gap <= range)
+          energy += 0.5 * r.k_a * kRadius * gap * gap - beyond;
       }
   return energy;
 }
@@ -329,8 +343,7 @@ class VoxelSumWall : public ::testing::TestWithParam<Reading> {};
 }  // namespace
 
 INSTANTIATE_TEST_SUITE_P(PaperTable, VoxelSumWall,
-                         ::testing::Values(kLatticeReading, kDUnitReading),
-                         [](const auto& info) {
+                         ::testing::Values(kLatticeReading, kDUnitReading), [](const auto& info) {
                            return std::string(info.param.name) == "lattice" ? "Lattice" : "DUnit";
                          });
 
@@ -358,21 +371,19 @@ TEST_P(VoxelSumWall, FloorForceIsTheReferenceSumEverywhere) {
 TEST_P(VoxelSumWall, RestsWhereTheReferenceSumBalancesTheLoad) {
   const Reading r = GetParam();
   const auto g = floor_geometry();
-  for (int which = 0; which < 2; ++which) {
-    const double load = load_for(r, which);
-    double z_ref = 0.0;
-    const Particle p = settled_on_floor(g, r, load, &z_ref);
+  for_each_load(g, r, [&](double load, double z_ref, Particle& p) {
     const ReferenceSum at_rest = reference_sum(g, r, p.x, {});
-    std::printf("[voxel_sum] %s: load %.4g: rest overlap/R %.4f (largest voxel), %d contacts, "
-                "z - z_ref = %.2e\n",
-                r.name, load, p.last.max_overlap_ratio, p.last.contacts, p.x.z - z_ref);
+    std::printf(
+        "[voxel_sum] %s: load %.4g: rest overlap/R %.4f (largest voxel), %d contacts, "
+        "z - z_ref = %.2e\n",
+        r.name, load, p.last.max_overlap_ratio, p.last.contacts, p.x.z - z_ref);
     EXPECT_NEAR(p.x.z, z_ref, 1e-3);
     EXPECT_NEAR(p.x.x, 12.0, 1e-9);
     EXPECT_NEAR(p.x.y, 12.0, 1e-9);
     EXPECT_LT(norm(p.v), 1e-9);
     EXPECT_NEAR(p.force.z, load, 1e-9 * (1.0 + load));  // at rest the wall carries the load
     EXPECT_EQ(p.last.contacts, at_rest.contacts);
-  }
+  });
 }
 
 // Paper: friction holds a deposit "as long as the particle adheres". On the voxel floor two
@@ -389,10 +400,7 @@ TEST_P(VoxelSumWall, RestsWhereTheReferenceSumBalancesTheLoad) {
 TEST_P(VoxelSumWall, HoldsBelowAndSlidesAboveTheThresholdOfTheVoxels) {
   const Reading r = GetParam();
   const auto g = floor_geometry();
-  for (int which = 0; which < 2; ++which) {
-    const double load = load_for(r, which);
-    double z_ref = 0.0;
-    Particle p = settled_on_floor(g, r, load, &z_ref);
+  for_each_load(g, r, [&](double load, double z_ref, Particle& p) {
     const SlideThreshold threshold = slide_threshold(g, r, load, z_ref);
     const int steps = tangential_steps(r, p);
     const Vec3 start = p.x, along{1, 0, 0}, base{0, 0, -load};
@@ -401,20 +409,21 @@ TEST_P(VoxelSumWall, HoldsBelowAndSlidesAboveTheThresholdOfTheVoxels) {
     const double stuck = ramp_and_hold(p, along, 0.0, friction, steps, 0, base, start);
     const double crept = ramp_and_hold(p, along, friction, below, steps, steps, base, start);
     const double slid = ramp_and_hold(p, along, below, above, steps / 5, steps, base, start);
-    std::printf("[voxel_sum] %s: load %.4g: friction limit at rest %.4g, largest resistance "
-                "%.4g (normal forces' part up to %.3g); moved %.3f cell at 95 %% of the first, "
-                "%.3f at 95 %% of the second, %.1f at 105 %%; rest height varies by %.3f cell\n",
-                r.name, load, threshold.at_rest, threshold.largest, threshold.largest_bump, stuck,
-                crept, slid, threshold.highest_z - threshold.lowest_z);
+    std::printf(
+        "[voxel_sum] %s: load %.4g: friction limit at rest %.4g, largest resistance "
+        "%.4g (normal forces' part up to %.3g); moved %.3f cell at 95 %% of the first, "
+        "%.3f at 95 %% of the second, %.1f at 105 %%; rest height varies by %.3f cell\n",
+        r.name, load, threshold.at_rest, threshold.largest, threshold.largest_bump, stuck, crept,
+        slid, threshold.highest_z - threshold.lowest_z);
     EXPECT_LT(stuck, 0.2);
     EXPECT_LT(crept, 1.0);
     EXPECT_GT(slid, 2.0);
-  }
+  });
 }
 
 // The normal pull-off force: held at 97 % of the reference the particle stays on the floor
-// (rises less than the adhesion range 0.03 R), held at 103 % it is torn off (more than one
-// cell). The reference is the largest net attraction of the voxels from the rest height up;
+// (still touching voxels, risen less than 0.2 cell), held at 103 % it is torn off (more than
+// one cell). The reference is the largest net attraction of the voxels from the rest height up;
 // it is several times the single smooth-wall contact's 0.03 k_a R^2.
 TEST_P(VoxelSumWall, PullOffForceIsTheSummedAdhesion) {
   const Reading r = GetParam();
@@ -425,13 +434,16 @@ TEST_P(VoxelSumWall, PullOffForceIsTheSummedAdhesion) {
   const int steps = 50 * 100;  // time_step is 1/100 of the normal period
   const Vec3 start = p.x, up{0, 0, 1};
   const double held = ramp_and_hold(p, up, 0.0, 0.97 * reference, steps, steps, {}, start);
-  const double torn = ramp_and_hold(p, up, 0.97 * reference, 1.03 * reference, steps / 5, steps,
-                                    {}, start);
+  const int still_touching = p.last.contacts;
+  const double torn =
+      ramp_and_hold(p, up, 0.97 * reference, 1.03 * reference, steps / 5, steps, {}, start);
   const double smooth = max_adhesion_force(paper_params(r).adhesion, kRadius);
-  std::printf("[voxel_sum] %s: pull-off %.4g (smooth wall 0.03 k_a R^2 = %.4g, ratio %.2f); "
-              "rose %.3f cell at 97 %%, %.1f at 103 %%\n",
-              r.name, reference, smooth, reference / smooth, held, torn);
-  EXPECT_LT(held, kRange * kRadius);
+  std::printf(
+      "[voxel_sum] %s: pull-off %.4g (smooth wall 0.03 k_a R^2 = %.4g, ratio %.2f); "
+      "rose %.3f cell at 97 %%, %.1f at 103 %%\n",
+      r.name, reference, smooth, reference / smooth, held, torn);
+  EXPECT_GT(still_touching, 0);
+  EXPECT_LT(held, 0.2);
   EXPECT_GT(torn, 1.0);
   EXPECT_GT(reference, 2.0 * smooth);
 }
@@ -466,9 +478,10 @@ TEST_P(VoxelSumWall, EnergyDoesNotGrowAtRestOnTheWall) {
     }
   }
   const double end = energy();
-  std::printf("[voxel_sum] %s: released with %.3g above rest: energy rose at most %.2e of it, "
-              "lost %.3f of it\n",
-              r.name, given, (highest - start) / given, (start - end) / given);
+  std::printf(
+      "[voxel_sum] %s: released with %.3g above rest: energy rose at most %.2e of it, "
+      "lost %.3f of it\n",
+      r.name, given, (highest - start) / given, (start - end) / given);
   EXPECT_GT(given, 0.0);
   EXPECT_LE(highest, start + 0.015 * given);
   EXPECT_LT(end, start - 0.5 * given);
@@ -507,9 +520,10 @@ TEST_P(VoxelSumWall, OverAnEdgeTheEdgeRowSums) {
                     1e-12 * (1.0 + norm(want)));
       }
       if (y == 12.0 && d0 == kRadius - 0.05)
-        std::printf("[voxel_sum] %s: over an edge at overlap 0.05: %d voxels, force %.4g "
-                    "(one merged contact: %.4g)\n",
-                    r.name, got.contacts, norm(got.force), r.k_w * 0.05);
+        std::printf(
+            "[voxel_sum] %s: over an edge at overlap 0.05: %d voxels, force %.4g "
+            "(one merged contact: %.4g)\n",
+            r.name, got.contacts, norm(got.force), r.k_w * 0.05);
     }
 }
 
@@ -665,9 +679,10 @@ TEST(VoxelSumWallGeometry, ContactCountsFitTheSpringStore) {
       for (int w = 0; w < 3; ++w)
         most[w] = std::max(most[w], static_sum(g, kDUnitReading, where[w], radius).contacts);
     }
-    std::printf("[voxel_sum] R = %.2f at 5 %% overlap: up to %d contacts on a floor, %d in an "
-                "inner edge, %d in an inner corner (capacity %d)\n",
-                radius, most[0], most[1], most[2], kVoxelSpringCapacity);
+    std::printf(
+        "[voxel_sum] R = %.2f at 5 %% overlap: up to %d contacts on a floor, %d in an "
+        "inner edge, %d in an inner corner (capacity %d)\n",
+        radius, most[0], most[1], most[2], kVoxelSpringCapacity);
     EXPECT_LE(most[2], kVoxelSpringCapacity);
   }
 }
@@ -700,10 +715,11 @@ TEST_P(VoxelSumWall, CubeVoxelsMakeTheFlattestFloor) {
         highest = std::max(highest, z);
       }
     const double corrugation = highest - lowest;
-    std::printf("[voxel_sum] %s: %-6s %.3f: rest height varies by %.4f cell over a cell; "
-                "friction limit %.4g where lowest, %.4g over the voxel's middle\n",
-                r.name, radius == 0.0 ? "cube" : "sphere", radius == 0.0 ? 1.0 : radius,
-                corrugation, hold_lowest, hold_middle);
+    std::printf(
+        "[voxel_sum] %s: %-6s %.3f: rest height varies by %.4f cell over a cell; "
+        "friction limit %.4g where lowest, %.4g over the voxel's middle\n",
+        r.name, radius == 0.0 ? "cube" : "sphere", radius == 0.0 ? 1.0 : radius, corrugation,
+        hold_lowest, hold_middle);
     if (radius == 0.0) {
       cube_corrugation = corrugation;
       EXPECT_GT(hold_lowest, 0.0);

@@ -88,17 +88,17 @@ struct VoxelSumInput {
   Vec3 centre;
   double radius = 0.0;
   double mass = 0.0;
-  Vec3 velocity;                            // the wall is at rest
+  Vec3 velocity;  // the wall is at rest
   double dt = 0.0;
   const VoxelSpringStore* springs = nullptr;  // last step's; null = no history
 };
 
 struct VoxelSumResult {
-  Vec3 force;                 // F_pw on the particle
-  VoxelSpringStore springs;   // one per active contact, for the next step
-  int contacts = 0;           // voxels overlapping or adhering this step
-  int sliding = 0;            // of those, how many slide (friction at the Coulomb limit)
-  int springs_dropped = 0;    // active contacts that found no room in `springs`
+  Vec3 force;                      // F_pw on the particle
+  VoxelSpringStore springs;        // one per active contact, for the next step
+  int contacts = 0;                // voxels overlapping or adhering this step
+  int sliding = 0;                 // of those, how many slide (friction at the Coulomb limit)
+  int springs_dropped = 0;         // active contacts that found no room in `springs`
   double max_overlap_ratio = 0.0;  // largest voxel overlap / R (0 when none overlaps)
 };
 
