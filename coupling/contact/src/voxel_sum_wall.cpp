@@ -1,0 +1,120 @@
+#include "contact/voxel_sum_wall.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace contact {
+
+const Vec3* VoxelSpringStore::find(std::int64_t voxel) const {
+  for (int s = 0; s < count; ++s)
+    if (slots[s].voxel == voxel) return &slots[s].spring;
+  return nullptr;
+}
+
+bool VoxelSpringStore::add(std::int64_t voxel, Vec3 spring) {
+  if (count >= kVoxelSpringCapacity) return false;
+  slots[count].voxel = voxel;
+  slots[count].spring = spring;
+  ++count;
+  return true;
+}
+
+void pack_spring_store(const VoxelSpringStore& store, double* out) {
+  std::fill(out, out + kPackedSpringStoreSize, 0.0);
+  out[0] = store.count;
+  for (int s = 0; s < store.count; ++s) {
+    double* slot = out + 1 + 4 * s;
+    slot[0] = static_cast<double>(store.slots[s].voxel);
+    slot[1] = store.slots[s].spring.x;
+    slot[2] = store.slots[s].spring.y;
+    slot[3] = store.slots[s].spring.z;
+  }
+}
+
+bool unpack_spring_store(const double* in, VoxelSpringStore& store) {
+  store = VoxelSpringStore{};
+  const double count = in[0];
+  if (!(count >= 0.0 && count <= kVoxelSpringCapacity) || count != std::floor(count)) return false;
+  VoxelSpringStore read;
+  for (int s = 0; s < static_cast<int>(count); ++s) {
+    const double* slot = in + 1 + 4 * s;
+    if (!(slot[0] >= 0.0) || slot[0] != std::floor(slot[0])) return false;
+    read.add(static_cast<std::int64_t>(slot[0]), Vec3{slot[1], slot[2], slot[3]});
+  }
+  store = read;
+  return true;
+}
+
+VoxelDistance distance_to_voxel(const lbm::VoxelGeometry& geometry, Vec3 centre, int i, int j,
+                                int k) {
+  // Lattice coordinates: the cube of voxel (i,j,k) spans [i - 1/2, i + 1/2] (and so on).
+  const double spacing = geometry.spacing();
+  const auto& origin = geometry.origin();
+  const int cell[3] = {i, j, k};
+  Vec3 offset;  // from the cube's closest point to the centre, in cells
+  Vec3 from_voxel_centre;
+  for (int a = 0; a < 3; ++a) {
+    const double u = (centre[a] - origin[a]) / spacing;
+    const double closest = std::clamp(u, cell[a] - 0.5, cell[a] + 0.5);
+    offset[a] = u - closest;
+    from_voxel_centre[a] = u - cell[a];
+  }
+  VoxelDistance out;
+  const double length = norm(offset);
+  if (length > 0.0) {
+    out.distance = length * spacing;
+    out.normal = (1.0 / length) * offset;
+    return out;
+  }
+  // Centre inside (or on) the cube: push it out the way it came, away from the voxel centre.
+  const double from_centre = norm(from_voxel_centre);
+  out.normal = from_centre > 0.0 ? (1.0 / from_centre) * from_voxel_centre : Vec3{0.0, 0.0, 1.0};
+  return out;
+}
+
+VoxelSumResult voxel_sum_wall_force(const WallContactParams& params, const VoxelSumInput& in) {
+  VoxelSumResult out;
+  const lbm::VoxelGeometry& geometry = in.geometry;
+  const double spacing = geometry.spacing();
+  const auto& origin = geometry.origin();
+  const auto& dims = geometry.dims();
+  const double reach = wall_contact_reach(params, in.radius);
+  const double reach_cells = reach / spacing;
+  // Voxels whose cube can come within reach: |u - i| <= reach + 1/2 along every axis.
+  int lo[3], hi[3];
+  for (int a = 0; a < 3; ++a) {
+    const double u = (in.centre[a] - origin[a]) / spacing;
+    lo[a] = std::max(0, static_cast<int>(std::ceil(u - reach_cells - 0.5)));
+    hi[a] = std::min(dims[a] - 1, static_cast<int>(std::floor(u + reach_cells + 0.5)));
+    if (lo[a] > hi[a]) return out;
+  }
+  const bool keep_springs = params.friction.mu > 0.0;
+  for (int k = lo[2]; k <= hi[2]; ++k)
+    for (int j = lo[1]; j <= hi[1]; ++j)
+      for (int i = lo[0]; i <= hi[0]; ++i) {
+        if (!geometry.is_solid(i, j, k)) continue;
+        const VoxelDistance voxel = distance_to_voxel(geometry, in.centre, i, j, k);
+        if (voxel.distance > reach) continue;
+        const auto key = static_cast<std::int64_t>(geometry.index(i, j, k));
+        const Vec3* stored = in.springs != nullptr ? in.springs->find(key) : nullptr;
+
+        WallContactInput contact;
+        contact.normal = voxel.normal;
+        contact.gap = voxel.distance - in.radius;
+        contact.radius = in.radius;
+        contact.mass = in.mass;
+        contact.velocity = in.velocity;
+        contact.spring = stored != nullptr ? *stored : Vec3{};
+        contact.dt = in.dt;
+        const WallContactResult result = wall_contact_force(params, contact);
+        if (!result.active) continue;
+        out.force += result.force;
+        ++out.contacts;
+        if (result.sliding) ++out.sliding;
+        out.max_overlap_ratio = std::max(out.max_overlap_ratio, -contact.gap / in.radius);
+        if (keep_springs && !out.springs.add(key, result.spring)) ++out.springs_dropped;
+      }
+  return out;
+}
+
+}  // namespace contact
