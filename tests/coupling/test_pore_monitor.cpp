@@ -1,0 +1,85 @@
+// The pore monitor (coupling/diagnostics/pore_monitor.h) and its building blocks: bonds, the
+// guards' particle probes, values in host units, restore.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "coupling/diagnostics/bonds.h"
+#include "coupling/diagnostics/particle_probes.h"
+#include "coupling/diagnostics/pore_monitor.h"
+#include "lbm/decomposition.h"
+
+using namespace coupling;
+
+TEST(Bonds, CohesiveBondWithinThreePercentOfTheRadiiSum) {
+  ParticleSet set;
+  set.add(1, {0.0, 0.0, 0.0}, {0, 0, 0}, 1.0);
+  set.add(2, {2.05, 0.0, 0.0}, {0, 0, 0}, 1.0);  // gap 0.05 <= 0.06: bonded
+  set.add(3, {0.0, 2.07, 0.0}, {0, 0, 0}, 1.0);  // gap 0.07 > 0.06
+  std::vector<char> bonded(3, 0);
+  mark_cohesive_bonds(set.view(), {{0, 2}}, bonded);
+  EXPECT_EQ(bonded, (std::vector<char>{0, 0, 0}));
+  mark_cohesive_bonds(set.view(), {{0, 1}, {0, 2}}, bonded);
+  EXPECT_EQ(bonded, (std::vector<char>{1, 1, 0}));
+  EXPECT_TRUE(within_adhesion_range(2.06, 2.0));
+  EXPECT_FALSE(within_adhesion_range(2.07, 2.0));
+}
+
+TEST(ParticleProbes, FastestCountsNaNAsInfiniteAndNearestSurfaceWrapsPeriodically) {
+  ParticleSet set;
+  set.add(7, {1.0, 1.0, 1.0}, {0.1, 0.0, 0.0}, 1.0);
+  set.add(8, {9.0, 1.0, 1.0}, {0.0, 0.2, 0.0}, 2.0);
+  EXPECT_EQ(fastest_particle(set.view()).id, 8);
+  EXPECT_NEAR(fastest_particle(set.view()).value, 0.2, 1e-15);
+  set.set_velocity(0, {std::nan(""), 0.0, 0.0});
+  EXPECT_EQ(fastest_particle(set.view()).id, 7);
+  EXPECT_TRUE(std::isinf(fastest_particle(set.view()).value));
+  PeriodicBox box;
+  box.length = {10.0, 10.0, 10.0};
+  box.periodic = {true, false, false};
+  // Node at x = 0.2: particle 8 is 1.2 away through the periodic face, its surface -0.8.
+  const ParticleProbe nearest = nearest_particle_surface(set.view(), box, {0.2, 1.0, 1.0});
+  EXPECT_EQ(nearest.id, 8);
+  EXPECT_NEAR(nearest.value, -0.8, 1e-12);
+  EXPECT_NE(instability_cause(nearest).find("gap of less than a cell"), std::string::npos);
+}
+
+TEST(PoreMonitor, DepositsAndCrossingsInHostUnits) {
+  lbm::PoreSceneSpec spec;
+  spec.inlet_length = 4;
+  spec.free_length = 4;
+  spec.pore_length = 6;
+  spec.outlet_length = 4;
+  spec.width = 12;
+  spec.pore_diameter = 8.0;
+  PoreMonitorSetup setup = pore_scene_monitor(spec);
+  EXPECT_DOUBLE_EQ(setup.inlet_plane, 3.5);
+  EXPECT_DOUBLE_EQ(setup.outlet_plane, 13.5);
+  EXPECT_EQ(setup.flow_length, 18);
+  UnitInputs in;
+  in.dx = 2.0;  // volumes scale with 8, lengths with 2
+  in.dt_dem = 0.01;
+  in.n_dem = 100;
+  in.nu = 1.0 / 6.0 * 4.0;  // tau = 1 at dt_lbm = 1, dx = 2
+  const UnitConversion units(in);
+  PoreMonitor monitor(setup, units);
+  ParticleSet set;
+  set.add(1, {3.0, 5.5, 5.5}, {0, 0, 0}, 1.0);   // upstream of the inlet plane
+  set.add(2, {10.0, 5.5, 5.5}, {0, 0, 0}, 1.5);  // in the pore, at rest
+  const lbm::Communicator serial;
+  monitor.record_particles(set.view(), {1, 1}, 0.75, serial);
+  const double V = 4.0 / 3.0 * M_PI * 1.5 * 1.5 * 1.5;
+  EXPECT_NEAR(monitor.values()[PoreMonitor::kDepositedVolume], V * 8.0, 1e-12);
+  EXPECT_EQ(monitor.values()[PoreMonitor::kDepositedCount], 1.0);
+  EXPECT_NEAR(monitor.values()[PoreMonitor::kDepositedLength], V / (M_PI * 16.0) * 2.0, 1e-12);
+  EXPECT_EQ(monitor.values()[PoreMonitor::kHydroForceX], 0.75);
+  set.set_position(0, {4.0, 5.5, 5.5});  // crosses the inlet plane downstream
+  monitor.record_particles(set.view(), {1, 1}, 0.0, serial);
+  EXPECT_EQ(monitor.values()[PoreMonitor::kParticlesIn], 1.0);
+  EXPECT_NEAR(monitor.values()[PoreMonitor::kParticlesInVolume], 4.0 / 3.0 * M_PI * 8.0, 1e-12);
+
+  PoreMonitor resumed(setup, units);
+  resumed.restore(monitor.values().data());
+  EXPECT_EQ(resumed.values(), monitor.values());
+}
