@@ -24,6 +24,7 @@
 #include "modify.h"
 #include "neigh_list.h"
 #include "neigh_request.h"
+#include "plugin_common/stop_run.h"
 #include "pore_scene_setup.h"
 #include "neighbor.h"
 #include "update.h"
@@ -69,14 +70,8 @@ FixLbmPore::~FixLbmPore() {
 int FixLbmPore::setmask() { return FixConst::POST_FORCE | FixConst::END_OF_STEP; }
 
 void FixLbmPore::init() {
-  coupling::UnitInputs in;
-  in.dx = options_.dx;
-  in.rho = options_.rho;
-  in.nu = options_.nu;
-  in.dt_dem = update->dt;
-  in.n_dem = options_.n_dem;
   try {
-    auto units = std::make_unique<coupling::UnitConversion>(in);
+    auto units = std::make_unique<coupling::UnitConversion>(lbm_pore::unit_inputs(options_, update->dt));
     if (solver_ && std::abs(units->tau() - units_->tau()) > 1e-12)
       throw lbm::InputError("the DEM time step or n_dem changed between runs (tau " +
                             std::to_string(units_->tau()) + " -> " + std::to_string(units->tau()) +
@@ -85,6 +80,7 @@ void FixLbmPore::init() {
       units_ = std::move(units);
       build_lattice();
     }
+    lbm_pore::check_neighbor_skin(options_, neighbor->skin);
   } catch (const lbm::InputError& e) {
     error->all(FLERR, fix_message(e.what()).c_str());
   }
@@ -102,24 +98,16 @@ void FixLbmPore::init() {
     error->all(FLERR, "fix lbm/pore needs ghost velocities: add 'communicate single vel yes'");
   if (force->newton_pair)
     error->all(FLERR, "fix lbm/pore needs 'newton off' (granular pair styles in LIGGGHTS)");
-  // The lubrication and bond search need every pair whose gap is below the lubrication
-  // cutoff: the neighbor list holds pairs closer than the contact distance plus the skin.
-  const double lubrication_reach = options_.lubrication_cutoff * options_.dx;
-  if (options_.lubrication && neighbor->skin < lubrication_reach) {
-    char text[300];
-    std::snprintf(text, sizeof text,
-                  "fix lbm/pore: the neighbor skin %g is smaller than the lubrication cutoff "
-                  "lubrication_cutoff * dx = %g: raise it ('neighbor %g bin') or lower "
-                  "lubrication_cutoff",
-                  neighbor->skin, lubrication_reach, lubrication_reach);
-    error->all(FLERR, text);
-  }
+  // The lubrication and bond search use a granular neighbour list of their own.
   const int request = neighbor->request(this);
   neighbor->requests[request]->pair = 0;
   neighbor->requests[request]->fix = 1;
   neighbor->requests[request]->half = 0;
   neighbor->requests[request]->gran = 1;
-  print_setup();
+  if (comm->me == 0)
+    lbm_pore::print_to_screen_and_log(screen, logfile,
+                                      lbm_pore::setup_summary(options_, *units_, frame_->dims, solver_->drive(),
+                                                              update->dt, monitor_setup_.pore_diameter).c_str());
 }
 
 void FixLbmPore::init_list(int, NeighList* list) { list_ = list; }
@@ -141,8 +129,7 @@ void FixLbmPore::find_gravity() {
                   "fix lbm/pore: fix gravity found: buoyancy -rho V g added to each particle, "
                   "g = (%g, %g, %g)\n",
                   gravity_[0], gravity_[1], gravity_[2]);
-    if (screen) std::fputs(text, screen);
-    if (logfile) std::fputs(text, logfile);
+    lbm_pore::print_to_screen_and_log(screen, logfile, text);
   }
 }
 
@@ -156,17 +143,13 @@ void FixLbmPore::build_geometry() {
 // Builds the lattice frame and the fluid solver on LIGGGHTS's own subdomains (each rank
 // owns the nodes inside its subdomain), and the coupling objects that work on them.
 void FixLbmPore::build_lattice() {
-  const double dx = options_.dx;
   frame_ = std::make_unique<coupling::LatticeFrame>();
-  frame_->dx = dx;
+  frame_->dx = options_.dx;
   frame_->dims = geometry_->dims();
   frame_->origin = geometry_->origin();
   frame_->check_fills_box(domain->boxlo, domain->boxhi);
   lbm_pore::check_boundaries(options_, domain->periodicity);
-  lbm::FluidParameters p;
-  p.tau = units_->tau();
-  p.magic = options_.magic;
-  p.periodic = {false, options_.lateral_periodic, options_.lateral_periodic};
+  const lbm::FluidParameters p = lbm_pore::fluid_parameters(options_, *units_);
   const lbm::FlowDrive drive = lbm_pore::drive_of(options_, *units_);
   const coupling::SubdomainGrid grid{domain->sublo, domain->subhi, comm->myloc, comm->procgrid, comm->procneigh};
   solver_ = std::make_unique<lbm::FluidSolver>(
@@ -175,45 +158,12 @@ void FixLbmPore::build_lattice() {
   coupling::SphereCouplingOptions co;
   co.wall_scheme = lbm::moving_wall::parse(options_.boundary);
   coupling_ = std::make_unique<coupling::SphereCoupling>(*solver_, co);
-  coupling::LubricationParameters lp;
-  lp.rho = 1.0;
-  lp.nu = units_->nu_lattice();
-  lp.cutoff = options_.lubrication_cutoff;
-  lubrication_ = std::make_unique<coupling::LubricationKernel>(
-      lp, coupling::LubricationScales{dx, units_->dt_lbm(), units_->force_unit()});
+  lubrication_ = std::make_unique<coupling::LubricationKernel>(lbm_pore::lubrication_kernel(options_, *units_));
   monitor_setup_.criteria.speed_threshold = lbm_pore::deposit_speed_threshold(options_, *units_, drive);
   monitor_ = std::make_unique<coupling::PoreMonitor>(monitor_setup_, *units_);
   if (!restored_values_.empty()) monitor_->restore(restored_values_.data());
   if (options_.vtk_every > 0)
     vtk_ = std::make_unique<lbm::VtkSeriesWriter>(options_.vtk_directory, "fluid");
-}
-
-void FixLbmPore::print_setup() const {
-  if (comm->me != 0) return;
-  const auto& dims = frame_->dims;
-  const auto& drive = solver_->drive();
-  char text[1500];
-  int n = std::snprintf(
-      text, sizeof text,
-      "fix lbm/pore: lattice %d x %d x %d nodes (dx = %g), %s\n"
-      "fix lbm/pore: DEM step %g, fluid step %g = %d DEM steps; pore diameter %.2f cells\n",
-      dims[0], dims[1], dims[2], options_.dx, units_->summary().c_str(), update->dt,
-      units_->dt_lbm(), options_.n_dem, monitor_setup_.pore_diameter);
-  if (drive.kind == lbm::FlowDrive::kInletVelocity)
-    n += std::snprintf(text + n, sizeof text - n,
-                       "fix lbm/pore: inlet velocity %g = %.4g lattice, lattice Mach %.3g\n",
-                       options_.drive_value, drive.inlet_velocity,
-                       std::abs(drive.inlet_velocity) / lbm::kSoundSpeed);
-  else
-    n += std::snprintf(text + n, sizeof text - n,
-                       "fix lbm/pore: pressure loss %g = %.4g lattice (density difference %.3g)\n",
-                       options_.drive_value, drive.pressure_loss, 3.0 * drive.pressure_loss);
-  n += std::snprintf(text + n, sizeof text - n,
-                     "fix lbm/pore: moving walls %s, lubrication %s (cutoff %g cells)\n",
-                     options_.boundary.c_str(), options_.lubrication ? "on" : "off",
-                     options_.lubrication_cutoff);
-  if (screen) std::fputs(text, screen);
-  if (logfile) std::fputs(text, logfile);
 }
 
 void FixLbmPore::setup(int vflag) {

@@ -84,7 +84,6 @@ class FixLbmPore : public Fix {
   void collect_group_pairs();
   void find_walls();
   void record_particles();
-  void print_setup() const;
   void check_fluid_state();
   void check_particle_speed();
   lbm_pore::AtomCouplingState& own_state(int i);  // resets a slot that held another atom

@@ -96,7 +96,5 @@ double FixLbmPore::compute_vector(int index) { return monitor_->value(index, *so
 // Where the time of the run went, on rank 0.
 void FixLbmPore::post_run() {
   if (comm->me != 0) return;
-  const std::string text = timer_.report(MPI_Wtime(), coupling_->times());
-  if (screen) std::fputs(text.c_str(), screen);
-  if (logfile) std::fputs(text.c_str(), logfile);
+  lbm_pore::print_to_screen_and_log(screen, logfile, timer_.report(MPI_Wtime(), coupling_->times()).c_str());
 }

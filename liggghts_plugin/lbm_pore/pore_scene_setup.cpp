@@ -82,4 +82,62 @@ double deposit_speed_threshold(const PoreOptions& o, const coupling::UnitConvers
   return coupling::DepositionCriteria{}.speed_threshold;
 }
 
+coupling::UnitInputs unit_inputs(const PoreOptions& o, double dt_dem) {
+  coupling::UnitInputs in;
+  in.dx = o.dx;
+  in.rho = o.rho;
+  in.nu = o.nu;
+  in.dt_dem = dt_dem;
+  in.n_dem = o.n_dem;
+  return in;
+}
+
+lbm::FluidParameters fluid_parameters(const PoreOptions& o, const coupling::UnitConversion& units) {
+  lbm::FluidParameters p;
+  p.tau = units.tau();
+  p.magic = o.magic;
+  p.periodic = {false, o.lateral_periodic, o.lateral_periodic};
+  return p;
+}
+
+coupling::LubricationKernel lubrication_kernel(const PoreOptions& o, const coupling::UnitConversion& units) {
+  coupling::LubricationParameters lp;
+  lp.rho = 1.0;
+  lp.nu = units.nu_lattice();
+  lp.cutoff = o.lubrication_cutoff;
+  return coupling::LubricationKernel(lp, coupling::LubricationScales{o.dx, units.dt_lbm(), units.force_unit()});
+}
+
+void check_neighbor_skin(const PoreOptions& o, double skin) {
+  const double reach = o.lubrication_cutoff * o.dx;
+  if (!o.lubrication || skin >= reach) return;
+  char text[300];
+  std::snprintf(text, sizeof text,
+                "the neighbor skin %g is smaller than the lubrication cutoff lubrication_cutoff * dx = "
+                "%g: raise it ('neighbor %g bin') or lower lubrication_cutoff",
+                skin, reach, reach);
+  throw lbm::InputError(text);
+}
+
+std::string setup_summary(const PoreOptions& o, const coupling::UnitConversion& units,
+                          const std::array<int, 3>& dims, const lbm::FlowDrive& drive, double dt_dem,
+                          double pore_diameter) {
+  char text[1500];
+  int n = std::snprintf(text, sizeof text,
+                        "fix lbm/pore: lattice %d x %d x %d nodes (dx = %g), %s\n"
+                        "fix lbm/pore: DEM step %g, fluid step %g = %d DEM steps; pore diameter %.2f cells\n",
+                        dims[0], dims[1], dims[2], o.dx, units.summary().c_str(), dt_dem, units.dt_lbm(),
+                        o.n_dem, pore_diameter);
+  if (drive.kind == lbm::FlowDrive::kInletVelocity)
+    n += std::snprintf(text + n, sizeof text - n, "fix lbm/pore: inlet velocity %g = %.4g lattice, lattice Mach %.3g\n",
+                       o.drive_value, drive.inlet_velocity, std::abs(drive.inlet_velocity) / lbm::kSoundSpeed);
+  else
+    n += std::snprintf(text + n, sizeof text - n,
+                       "fix lbm/pore: pressure loss %g = %.4g lattice (density difference %.3g)\n", o.drive_value,
+                       drive.pressure_loss, 3.0 * drive.pressure_loss);
+  std::snprintf(text + n, sizeof text - n, "fix lbm/pore: moving walls %s, lubrication %s (cutoff %g cells)\n",
+                o.boundary.c_str(), o.lubrication ? "on" : "off", o.lubrication_cutoff);
+  return text;
+}
+
 }  // namespace lbm_pore

@@ -4,8 +4,10 @@
 // box and boundaries match the fluid's. No LIGGGHTS dependency (the fix passes its box).
 #include <array>
 #include <memory>
+#include <string>
 
 #include "coupling/diagnostics/pore_monitor.h"
+#include "coupling/lubrication/lubrication_kernel.h"
 #include "coupling/unit_conversion.h"
 #include "lbm/fluid_solver.h"
 #include "lbm/voxel_geometry.h"
@@ -34,5 +36,24 @@ void check_boundaries(const PoreOptions& options, const int* periodicity);
 // 'deposit_speed' keyword, else a fraction of the inlet velocity, else the default.
 double deposit_speed_threshold(const PoreOptions& options, const coupling::UnitConversion& units,
                                const lbm::FlowDrive& drive);
+
+// The unit conversion's inputs: the options' dx, rho, nu, n_dem and the script's time step.
+coupling::UnitInputs unit_inputs(const PoreOptions& options, double dt_dem);
+
+// TRT parameters and periodic axes of the fluid (flow along x, never periodic).
+lbm::FluidParameters fluid_parameters(const PoreOptions& options, const coupling::UnitConversion& units);
+
+// The lubrication kernel in the script's units (lattice-unit law, cutoff in cells).
+coupling::LubricationKernel lubrication_kernel(const PoreOptions& options, const coupling::UnitConversion& units);
+
+// The neighbour list must hold every pair within the lubrication cutoff (contact distance
+// plus skin): throws lbm::InputError saying which skin is needed.
+void check_neighbor_skin(const PoreOptions& options, double skin);
+
+// The lines printed at setup: lattice, time steps, tau, drive and its Mach number or
+// density difference, the moving-wall scheme and lubrication.
+std::string setup_summary(const PoreOptions& options, const coupling::UnitConversion& units,
+                          const std::array<int, 3>& dims, const lbm::FlowDrive& drive, double dt_dem,
+                          double pore_diameter);
 
 }  // namespace lbm_pore

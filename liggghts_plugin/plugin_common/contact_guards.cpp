@@ -66,8 +66,7 @@ void ContactGuards::check_time_step(const TimeStepFinding& found) {
                   wording_.style, wording_.contact, found.limit.contact_time, wording_.lightest,
                   found.lightest_mass, found.stiffness_name, found.stiffness,
                   contact::kMinStepsPerContact, dt_max, update->dt);
-    if (screen) std::fputs(text, screen);
-    if (logfile) std::fputs(text, logfile);
+    print_to_screen_and_log(screen, logfile, text);
   }
 }
 

@@ -6,6 +6,11 @@
 
 namespace lbm_pore {
 
+void print_to_screen_and_log(FILE* screen, FILE* logfile, const char* text) {
+  if (screen) std::fputs(text, screen);
+  if (logfile) std::fputs(text, logfile);
+}
+
 void stop_on_this_rank(LAMMPS_NS::Error* error, int rank, FILE* screen, FILE* logfile,
                        const char* text) {
   FILE* out = screen ? screen : stderr;
