@@ -21,6 +21,7 @@
 #include "lbm/input_error.h"
 #include "lbm/stability.h"
 #include "lbm/vtk_output.h"
+#include "memory.h"
 #include "modify.h"
 #include "neigh_list.h"
 #include "neigh_request.h"
@@ -50,6 +51,9 @@ FixLbmPore::FixLbmPore(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg, arg) 
     error->all(FLERR, "fix lbm/pore needs per-atom radii: use atom_style granular (or sphere)");
   vector_flag = 1;
   size_vector = coupling::PoreMonitor::kCount;
+  peratom_flag = 1;  // f_ID[1..3]: each atom's hydrodynamic force (dump custom)
+  size_peratom_cols = 3;
+  peratom_freq = 1;
   global_freq = 1;
   extvector = 0;
   restart_global = 1;
@@ -65,6 +69,7 @@ FixLbmPore::FixLbmPore(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg, arg) 
 FixLbmPore::~FixLbmPore() {
   atom->delete_callback(id, 0);
   atom->delete_callback(id, 1);
+  memory->destroy(hydrodynamic_force_);
 }
 
 int FixLbmPore::setmask() { return FixConst::POST_FORCE | FixConst::END_OF_STEP; }
@@ -225,10 +230,12 @@ void FixLbmPore::post_force(int) {
   double** v = atom->v;
   double** torque = atom->torque;
   for (int i = 0; i < atom->nlocal; ++i) {
+    hydrodynamic_force_[i][0] = hydrodynamic_force_[i][1] = hydrodynamic_force_[i][2] = 0.0;
     if (!(atom->mask[i] & groupbit)) continue;
     const auto load = load_model_->at_substep(own_state(i).load, {v[i][0], v[i][1], v[i][2]}, atom->radius[i]);
     for (int a = 0; a < 3; ++a) f[i][a] += load.hydrodynamic[a];
-    if (torque)
+    for (int a = 0; a < 3; ++a) hydrodynamic_force_[i][a] = load.hydrodynamic[a];
+    if (torque && options_.rotation)
       for (int a = 0; a < 3; ++a) torque[i][a] += load.torque[a];
     if (has_gravity_)
       for (int a = 0; a < 3; ++a) f[i][a] += load.buoyancy[a];
@@ -237,12 +244,16 @@ void FixLbmPore::post_force(int) {
   const double start = MPI_Wtime();
   collect_group_pairs();
   const auto view = atoms_view();
+  // The per-atom output gets the lubrication too: what it added to f (owned atoms).
+  lubrication_before_.assign(f[0], f[0] + 3 * atom->nlocal);
   lubrication_->add_pair_forces(view, pairs_, f[0]);
   static const coupling::NearestWall kNoWall;
   const auto wall_of = [&](std::size_t i) -> const coupling::NearestWall& {
     return (atom->mask[i] & groupbit) ? state_[i].wall : kNoWall;
   };
   lubrication_->add_wall_forces(view, wall_of, f[0]);
+  for (int i = 0; i < atom->nlocal; ++i)
+    for (int a = 0; a < 3; ++a) hydrodynamic_force_[i][a] += f[i][a] - lubrication_before_[3 * i + a];
   timer_.add(coupling::RunTimer::kLubrication, MPI_Wtime() - start);
 }
 
@@ -299,7 +310,7 @@ void FixLbmPore::gather_particles(bool advance) {
   atoms.tag = atom->tag;
   atoms.x = atom->x;
   atoms.v = fluid_velocity_rows_.data();
-  atoms.omega = atom->omega_flag ? atom->omega : nullptr;
+  atoms.omega = atom->omega_flag && options_.rotation ? atom->omega : nullptr;
   atoms.radius = atom->radius;
   particles_.gather(atoms, *frame_, dt_lbm);
 }

@@ -104,6 +104,10 @@ class FixLbmPore : public Fix {
   std::unique_ptr<lbm::VtkSeriesWriter> vtk_;
   lbm_pore::LatticeParticles particles_;
   std::vector<lbm_pore::AtomCouplingState> state_;  // per atom (owned and ghosts)
+  // Per atom, the per-atom output: the hydrodynamic force of the last substep (the stored
+  // load with its velocity correction, plus lubrication), script units.
+  double** hydrodynamic_force_ = nullptr;
+  std::vector<double> lubrication_before_;          // scratch: f before the lubrication
   std::vector<double*> fluid_velocity_rows_;        // rows of state_ for the particle gather
   std::vector<coupling::ParticlePair> pairs_;       // the group's pairs of the neighbour list
   long long pairs_step_ = -1;                       // the DEM step pairs_ was collected at

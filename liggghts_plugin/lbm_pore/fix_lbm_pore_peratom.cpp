@@ -11,6 +11,7 @@
 #include "fix_lbm_pore.h"
 #include "lbm/checkpoint.h"
 #include "lbm/input_error.h"
+#include "memory.h"
 #include "plugin_common/stop_run.h"
 #include "update.h"
 
@@ -48,7 +49,13 @@ void FixLbmPore::restart(char* buf) {
   if (monitor_) monitor_->restore(restored_values_.data());
 }
 
-void FixLbmPore::grow_arrays(int nmax) { state_.resize(nmax); }
+void FixLbmPore::grow_arrays(int nmax) {
+  const int old = static_cast<int>(state_.size());
+  state_.resize(nmax);
+  memory->grow(hydrodynamic_force_, nmax, 3, "lbm/pore:hydrodynamic_force");
+  for (int i = old; i < nmax; ++i) hydrodynamic_force_[i][0] = hydrodynamic_force_[i][1] = hydrodynamic_force_[i][2] = 0.0;
+  array_atom = hydrodynamic_force_;
+}
 
 // A new atom (fix insert/...) starts with no load and no previous position: its slot may
 // hold a former atom's values. Not every LIGGGHTS insertion calls set_arrays, so the slot
@@ -63,7 +70,10 @@ AtomCouplingState& FixLbmPore::own_state(int i) {
   return state_[i];
 }
 
-void FixLbmPore::copy_arrays(int i, int j, int) { state_[j] = state_[i]; }
+void FixLbmPore::copy_arrays(int i, int j, int) {
+  state_[j] = state_[i];
+  for (int a = 0; a < 3; ++a) hydrodynamic_force_[j][a] = hydrodynamic_force_[i][a];
+}
 
 int FixLbmPore::pack_exchange(int i, double* buf) {
   state_[i].pack(buf);

@@ -140,6 +140,8 @@ PoreOptions parse_pore_options(const std::vector<std::string>& args) {
       o.boundary = words.text(key);
       if (o.boundary != "bounce_back" && o.boundary != "bouzidi" && o.boundary != "mls")
         fail("keyword 'boundary' = '" + o.boundary + "': must be bounce_back, bouzidi or mls");
+    } else if (key == "rotation") {
+      o.rotation = words.yes_no(key);
     } else if (key == "lubrication") {
       o.lubrication = words.yes_no(key);
     } else if (key == "lubrication_cutoff") {
@@ -165,7 +167,7 @@ PoreOptions parse_pore_options(const std::vector<std::string>& args) {
 
 const char* pore_options_usage() {
   return "dx, rho, nu, n_dem, magic, scene (pore|voxels), origin, lateral, velocity, "
-         "pressure_loss, boundary, lubrication, lubrication_cutoff, deposit_speed, vtk, "
+         "pressure_loss, boundary, rotation, lubrication, lubrication_cutoff, deposit_speed, vtk, "
          "checkpoint";
 }
 

@@ -29,6 +29,9 @@ struct PoreOptions {
   // Particle coupling.
   std::string boundary = "mls";  // bounce_back | bouzidi | mls
   bool lubrication = true;
+  // The paper neglects rotation (translation only): with 'rotation no' the fix adds no
+  // torque and the fluid sees the particles without spin (integrate them with fix nve).
+  bool rotation = true;
   double lubrication_cutoff = 2.0 / 3.0;  // in lattice cells
   double deposit_speed = -1.0;            // < 0: 10 % of the inlet velocity (1e-4 lattice with a pressure drive)
   // Output.

@@ -4,9 +4,10 @@ compares what it measures with a physical expectation or a reference run. Prints
 with its bound (tests/harness/liggghts_run.py); exits 1 when one fails.
 
 usage: coupled_check.py --driver liggghts-lbm --scripts DIR [--mpirun mpirun] CASE
-CASE: adhesion | clog | parallel | restart | bad_arguments
+CASE: adhesion | clog | parallel | outputs | restart | bad_arguments
 """
 import math
+import os
 import subprocess
 
 from liggghts_run import (at_step, check, error_line, has_nan, main, relative_difference,
@@ -97,6 +98,38 @@ def case_parallel(h):
               "< 1e-9 of its largest value over the whole run (round-off: sums in another order)")
 
 
+def case_outputs(h):
+    """The per-atom hydrodynamic force (f_pore[1..3], for dump custom, as the paper's snapshot
+    colours particles by drag per mass) is the force the fluid puts on each particle: on a
+    free particle, the only force, it must equal its acceleration times its mass. Velocity
+    Verlet gives m (v(n+1) - v(n)) / dt = (F(n) + F(n+1)) / 2 exactly, checked every substep
+    across a fluid step. The dump file holds the column. With 'rotation no' (the paper's
+    translation-only particles) the fix adds no torque: a particle in the shear of the pore
+    then keeps omega = 0, while with rotation it spins up."""
+    steps, dt = 60000, 0.01
+    rotating = h.run("in.outputs", {"steps": steps})
+    rows = thermo_rows(rotating.output)
+    fine = [r for r in rows if r["Step"] > steps]
+    scale = max(abs(r["drag_x"]) for r in fine)
+    worst = max(abs(b["m"] * (b["vx"] - a["vx"]) / dt - 0.5 * (a["drag_x"] + b["drag_x"]))
+                for a, b in zip(fine, fine[1:])) / scale
+    check("outputs_peratom_force_is_mass_times_acceleration", len(fine) > 100 and worst < 1e-6, f"{worst:.3g}",
+          f"< 1e-6 of the largest force over {len(fine)} consecutive substeps")
+    late = [r for r in rows if steps // 2 <= r["Step"] <= steps]
+    check("outputs_drag_along_the_flow", all(r["drag_x"] > 0.0 for r in late), min(r["drag_x"] for r in late), "> 0")
+    with open(os.path.join(rotating.work, "dump.particles")) as dump:
+        lines = dump.read().splitlines()
+    header = max(i for i, line in enumerate(lines) if line.startswith("ITEM: ATOMS"))  # the last snapshot
+    values = dict(zip(lines[header].split()[2:], map(float, lines[header + 1].split())))
+    check("outputs_dump_has_the_force", values.get("f_pore[1]", 0.0) > 0.0, values.get("f_pore[1]"),
+          "> 0 (dragged along the flow) in the f_pore[1] column of dump custom's last snapshot")
+    spin = max(r["wmax"] for r in late)
+    check("outputs_rotation_spins_up", spin > 1e-6, f"{spin:.3g}", "|omega| > 1e-6 with rotation")
+    still = thermo_rows(h.run("in.outputs", {"steps": steps, "fix_extra": "rotation no"}).output)
+    check("outputs_rotation_no_keeps_omega_zero", max(r["wmax"] for r in still) == 0.0,
+          max(r["wmax"] for r in still), "== 0 with 'rotation no'")
+
+
 def case_restart(h):
     """write_restart + read_restart in a second process continue as if never stopped."""
     common = {"clean_steps": 100000, "restart_read": ""}
@@ -166,5 +199,5 @@ def case_bad_arguments(h):
 
 
 if __name__ == "__main__":
-    main({"adhesion": case_adhesion, "clog": case_clog, "parallel": case_parallel,
+    main({"adhesion": case_adhesion, "clog": case_clog, "parallel": case_parallel, "outputs": case_outputs,
           "restart": case_restart, "bad_arguments": case_bad_arguments}, __doc__)
