@@ -148,6 +148,12 @@ PoreOptions parse_pore_options(const std::vector<std::string>& args) {
       o.lubrication_cutoff = words.number(key, 0.0, 2.0);
     } else if (key == "deposit_speed") {
       o.deposit_speed = words.number(key, 0.0, kInf, false);
+    } else if (key == "burst_drop") {
+      o.burst_drop = words.number(key, 0.0, 1.0);
+    } else if (key == "burst_window") {
+      o.burst_window = words.number(key, 0.0, kInf);
+    } else if (key == "burst_file") {
+      o.burst_file = words.text(key);
     } else if (key == "vtk") {
       o.vtk_every = words.integer(key, 0, 1000000000);
       o.vtk_directory = words.text("vtk (directory)");
@@ -167,7 +173,8 @@ PoreOptions parse_pore_options(const std::vector<std::string>& args) {
 
 const char* pore_options_usage() {
   return "dx, rho, nu, n_dem, magic, scene (pore|voxels), origin, lateral, velocity, "
-         "pressure_loss, boundary, rotation, lubrication, lubrication_cutoff, deposit_speed, vtk, "
+         "pressure_loss, boundary, rotation, lubrication, lubrication_cutoff, deposit_speed, burst_drop, "
+         "burst_window, burst_file, vtk, "
          "checkpoint";
 }
 

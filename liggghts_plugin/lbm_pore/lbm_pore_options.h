@@ -34,6 +34,12 @@ struct PoreOptions {
   bool rotation = true;
   double lubrication_cutoff = 2.0 / 3.0;  // in lattice cells
   double deposit_speed = -1.0;            // < 0: 10 % of the inlet velocity (1e-4 lattice with a pressure drive)
+  // Erosive bursts (coupling/diagnostics/burst_detector.h): a peak of the pressure loss
+  // followed by a fall of at least burst_drop (fraction of the peak) within burst_window
+  // (time units; < 0: the detector's default), one row per burst in burst_file ("": none).
+  double burst_drop = 0.1;
+  double burst_window = -1.0;
+  std::string burst_file;
   // Output.
   int vtk_every = 0;
   std::string vtk_directory = "lbm_vtk";
