@@ -9,8 +9,9 @@ pressure loss, e.g. `thermo_style custom step f_pore[1] f_pore[6] ...` (LIGGGHTS
 header as pore[1], pore[6]). With the deposited volume f_<ID>[6] in the block as well, it is
 drawn on a second axis (the paper relates the pressure peaks to V_dep). A burst is a fall of
 the pressure loss by more than `--drop` (fraction of the preceding peak, default 10 %) within
-`--window` thermo rows (default 10: 1000 fluid steps in the example). Prints each burst as
-`BURST step peak after drop_fraction` and writes the plot.
+`--window` thermo rows (default 10: 1000 fluid steps in the example), followed to its
+minimum; the rules are those of fix lbm/pore's online detector (find_bursts). Prints each
+burst as `BURST step peak after drop_fraction` and writes the plot.
 """
 import argparse
 import sys
@@ -37,25 +38,34 @@ def read_thermo(path):
 
 
 def find_bursts(steps, pressure, drop, window):
-    """(peak, after) index pairs: a peak is the highest value since `window` rows before it and
-    until the pressure's lowest point within `window` rows after it, which lies more than
-    `drop` (fraction of the peak) below it."""
-    bursts, i, n = [], 0, len(pressure)
-    while i < n:
-        peak = pressure[i]
-        if peak <= 0 or any(pressure[k] > peak for k in range(max(0, i - window), i)):
-            i += 1
-            continue
-        low = i
-        for j in range(i + 1, min(n, i + window + 1)):
-            if pressure[j] > peak:
-                break
-            if pressure[j] < pressure[low]:
-                low = j
-        if pressure[low] < (1 - drop) * peak:
-            bursts.append((i, low))
-            i = low
-        i += 1
+    """(peak, minimum) index pairs of the erosive bursts, by the rules of fix lbm/pore's online
+    detector (coupling/diagnostics/burst_detector.h) with thermo rows as samples: a peak is a
+    row with P > 0 that no row of the `window` rows before it exceeds; a burst starts at the
+    first row below (1 - drop) P_peak at most `window` rows after the peak with no higher row
+    in between; it is followed to its lowest row and ends at the first row above the peak or
+    more than `window` rows after the fall last went on by more than drop/10 of the peak; the
+    next peak comes after the minimum. A burst still being followed at the end is kept."""
+    bursts, following, eligible_from = [], None, 0
+    for j, p in enumerate(pressure):
+        if following is not None:
+            peak, low, floor = following
+            if p > pressure[peak] or j - floor > window:
+                bursts.append((peak, low))
+                eligible_from, following = low + 1, None
+            else:
+                low = j if p < pressure[low] else low
+                floor = j if p < pressure[floor] - 0.1 * drop * pressure[peak] else floor
+                following = (peak, low, floor)
+                continue
+        # The highest row of the last `window` rows (the latest of equal ones), if it is a peak.
+        first = max(0, j - window)
+        i = max(range(first, j + 1), key=lambda k: (pressure[k], k))
+        if (i != j and i >= eligible_from and pressure[i] > 0
+                and not any(pressure[k] > pressure[i] for k in range(max(0, i - window), i))
+                and p < (1 - drop) * pressure[i]):
+            following = (i, j, j)
+    if following is not None:
+        bursts.append(following[:2])
     return bursts
 
 

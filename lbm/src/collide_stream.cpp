@@ -11,6 +11,12 @@ double equilibrium(int q, double rho, const std::array<double, 3>& u) {
   return D3Q19::w[q] * rho * (1.0 + 3.0 * cu + 4.5 * cu * cu - 1.5 * uu);
 }
 
+double incompressible_equilibrium(int q, double rho, double rho0, const std::array<double, 3>& u) {
+  const double cu = D3Q19::c[q][0] * u[0] + D3Q19::c[q][1] * u[1] + D3Q19::c[q][2] * u[2];
+  const double uu = u[0] * u[0] + u[1] * u[1] + u[2] * u[2];
+  return D3Q19::w[q] * (rho + rho0 * (3.0 * cu + 4.5 * cu * cu - 1.5 * uu));
+}
+
 namespace {
 
 using L = D3Q19;
@@ -23,11 +29,13 @@ constexpr int kChunk = 64;
 // The q loops carry "GCC unroll 19": GCC peels at most 16 iterations by default, and only a
 // fully unrolled loop turns the velocity components into constants (a 2.5x speed-up).
 
-template <bool kForce>
+// kIncompressible: He & Luo's equilibrium, the momentum rho0 u and rho only in the zeroth
+// order (a compile-time choice, so the standard kernel's arithmetic is untouched).
+template <bool kForce, bool kIncompressible>
 void collide_stream_row(const Real* __restrict src, Real* __restrict dst,
                         const std::uint8_t* __restrict type, std::size_t n, std::size_t base,
                         int length, const std::ptrdiff_t* off, double omega_plus,
-                        double omega_minus, double fx, double fy, double fz) {
+                        double omega_minus, double fx, double fy, double fz, double rho0) {
   const double source_even = 1.0 - 0.5 * omega_plus;
   const double source_odd = 1.0 - 0.5 * omega_minus;
   alignas(64) double f[L::Q][kChunk];
@@ -53,7 +61,7 @@ void collide_stream_row(const Real* __restrict src, Real* __restrict dst,
       // Non-fluid nodes are computed on a harmless state (rho = 1, u = 0) and zeroed
       // below, so the loop needs no branch.
       rho = fluid * rho + (1.0 - fluid);
-      const double inv_rho = 1.0 / rho;
+      const double inv_rho = kIncompressible ? 1.0 / rho0 : 1.0 / rho;
       double ux = fluid * jx * inv_rho, uy = fluid * jy * inv_rho, uz = fluid * jz * inv_rho;
       if (kForce) {
         ux += 0.5 * fx * inv_rho;
@@ -63,7 +71,8 @@ void collide_stream_row(const Real* __restrict src, Real* __restrict dst,
       const double uu = 1.5 * (ux * ux + uy * uy + uz * uz);
       const double uf = kForce ? (ux * fx + uy * fy + uz * fz) : 0.0;
       {  // Rest population: purely even.
-        const double feq = L::w[0] * rho * (1.0 - uu);
+        const double feq =
+            kIncompressible ? L::w[0] * (rho - rho0 * uu) : L::w[0] * rho * (1.0 - uu);
         double out = f[0][i] - omega_plus * (f[0][i] - feq);
         if (kForce) out += source_even * L::w[0] * (-3.0 * uf);
         f[0][i] = fluid * out;
@@ -73,8 +82,9 @@ void collide_stream_row(const Real* __restrict src, Real* __restrict dst,
       for (int q = 1; q < L::Q; q += 2) {
         const double cu = L::c[q][0] * ux + L::c[q][1] * uy + L::c[q][2] * uz;
         const double w = L::w[q];
-        const double eq_plus = w * rho * (1.0 + 4.5 * cu * cu - uu);
-        const double eq_minus = w * rho * 3.0 * cu;
+        const double eq_plus = kIncompressible ? w * (rho + rho0 * (4.5 * cu * cu - uu))
+                                               : w * rho * (1.0 + 4.5 * cu * cu - uu);
+        const double eq_minus = w * (kIncompressible ? rho0 : rho) * 3.0 * cu;
         const double a = f[q][i], b = f[q + 1][i];
         const double relax_plus = omega_plus * (0.5 * (a + b) - eq_plus);
         const double relax_minus = omega_minus * (0.5 * (a - b) - eq_minus);
@@ -105,17 +115,17 @@ void collide_stream(const CollideStreamArgs& a) {
   for (int q = 0; q < L::Q; ++q) off[q] = g.offset(L::c[q][0], L::c[q][1], L::c[q][2]);
   const std::size_t n = g.num_cells();
   const bool forced = a.force[0] != 0.0 || a.force[1] != 0.0 || a.force[2] != 0.0;
+  // The row kernel of the options, chosen once (no option is looked up per cell).
+  const auto row = a.incompressible
+                       ? (forced ? collide_stream_row<true, true> : collide_stream_row<false, true>)
+                       : (forced ? collide_stream_row<true, false> : collide_stream_row<false, false>);
   const int nx = g.size(0), ny = g.size(1), nz = g.size(2);
 #pragma omp parallel for collapse(2) schedule(static)
   for (int k = 0; k < nz; ++k)
     for (int j = 0; j < ny; ++j) {
       const std::size_t base = g.cell(0, j, k);
-      if (forced)
-        collide_stream_row<true>(a.src, a.dst, a.node_type, n, base, nx, off, a.omega_plus,
-                                 a.omega_minus, a.force[0], a.force[1], a.force[2]);
-      else
-        collide_stream_row<false>(a.src, a.dst, a.node_type, n, base, nx, off, a.omega_plus,
-                                  a.omega_minus, 0.0, 0.0, 0.0);
+      row(a.src, a.dst, a.node_type, n, base, nx, off, a.omega_plus, a.omega_minus, a.force[0],
+          a.force[1], a.force[2], a.rho0);
     }
 }
 

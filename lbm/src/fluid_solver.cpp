@@ -104,12 +104,17 @@ void FluidSolver::build_wall_links() {
       }
 }
 
+double FluidSolver::equilibrium_at(int q, double rho, const std::array<double, 3>& u) const {
+  return parameters_.incompressible ? incompressible_equilibrium(q, rho, parameters_.rho0, u)
+                                    : equilibrium(q, rho, u);
+}
+
 void FluidSolver::initialise_equilibrium(double rho, const std::array<double, 3>& u) {
   const std::size_t n = layout_.num_cells();
   for (std::size_t cell = 0; cell < n; ++cell) {
     const bool fluid = node_type_[cell] == kFluid;
     for (int q = 0; q < D3Q19::Q; ++q)
-      f_.at(q, cell) = fluid ? static_cast<Real>(equilibrium(q, rho, u)) : Real(0);
+      f_.at(q, cell) = fluid ? static_cast<Real>(equilibrium_at(q, rho, u)) : Real(0);
   }
 }
 
@@ -123,7 +128,8 @@ void FluidSolver::initialise_equilibrium(
         const auto s = state(g[0], g[1], g[2]);
         const bool fluid = node_type_[cell] == kFluid;
         for (int q = 0; q < D3Q19::Q; ++q)
-          f_.at(q, cell) = fluid ? static_cast<Real>(equilibrium(q, s[0], {s[1], s[2], s[3]})) : Real(0);
+          f_.at(q, cell) =
+              fluid ? static_cast<Real>(equilibrium_at(q, s[0], {s[1], s[2], s[3]})) : Real(0);
       }
 }
 
@@ -155,6 +161,7 @@ void FluidSolver::apply_open_boundaries() {
       inlet.kind = OpenFace::kDensity;
       inlet.value = drive_.outlet_density + drive_.pressure_loss / D3Q19::cs2;
     }
+    inlet.momentum_density = parameters_.incompressible ? parameters_.rho0 : 0.0;
     apply_open_face(inlet, layout_, node_type_, f_);
   }
   if (owned.hi[a] == global.hi[a]) {
@@ -164,6 +171,7 @@ void FluidSolver::apply_open_boundaries() {
     outlet.local_plane = layout_.size(a) - 1;
     outlet.kind = OpenFace::kDensity;
     outlet.value = drive_.outlet_density;
+    outlet.momentum_density = parameters_.incompressible ? parameters_.rho0 : 0.0;
     apply_open_face(outlet, layout_, node_type_, f_);
   }
 }
@@ -177,6 +185,8 @@ void FluidSolver::collide_stream() {
   args.omega_plus = trt_.omega_plus;
   args.omega_minus = trt_.omega_minus;
   args.force = parameters_.body_force;
+  args.incompressible = parameters_.incompressible;
+  args.rho0 = parameters_.rho0;
   lbm::collide_stream(args);
   std::swap(f_, f_next_);
   ++time_step_;
@@ -204,6 +214,7 @@ std::array<double, 3> FluidSolver::velocity(std::size_t cell) const {
     for (int a = 0; a < 3; ++a) j[a] += v * D3Q19::c[q][a];
   }
   if (rho <= 0.0) return {0.0, 0.0, 0.0};
+  if (parameters_.incompressible) rho = parameters_.rho0;  // momentum rho0 u (He & Luo)
   const auto& F = parameters_.body_force;
   // Post-collision momentum = rho u + F/2 with Guo forcing (see collide_stream.cpp).
   return {(j[0] - 0.5 * F[0]) / rho, (j[1] - 0.5 * F[1]) / rho, (j[2] - 0.5 * F[2]) / rho};

@@ -61,8 +61,11 @@ void for_plane(const FluidSolver& solver, int axis, int index, Visit visit) {
 
 double plane_flux(const FluidSolver& solver, int axis, int index) {
   double flux = 0.0;
+  // The momentum, rho u (or rho0 u with the incompressible equilibrium), over rho0.
+  const bool incompressible = solver.parameters().incompressible;
   for_plane(solver, axis, index, [&](std::size_t cell) {
-    flux += solver.density(cell) * solver.velocity(cell)[axis];
+    const double rho = incompressible ? solver.parameters().rho0 : solver.density(cell);
+    flux += rho * solver.velocity(cell)[axis];
   });
   return solver.decomposition().comm.sum(flux) / solver.parameters().rho0;
 }

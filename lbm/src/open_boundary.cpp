@@ -38,14 +38,25 @@ void apply_open_face(const OpenFace& face, const BlockLayout& layout,
           outgoing_sum += post[q];
         }
       }
-      // u_n is the velocity along the inward normal.
-      double rho, u_n;
-      if (face.kind == OpenFace::kVelocity) {
+      // u_n is the velocity along the inward normal; rho = T + O + I and m u_n = I - O with
+      // m = rho (standard) or rho0 (incompressible), so rho - m u_n = T + 2 O.
+      double rho, u_n, m;
+      const double known = tangential_sum + 2.0 * outgoing_sum;
+      if (face.momentum_density > 0.0) {
+        m = face.momentum_density;
+        if (face.kind == OpenFace::kVelocity) {
+          u_n = face.value * face.inward;
+          rho = known + m * u_n;
+        } else {
+          rho = face.value;
+          u_n = (rho - known) / m;
+        }
+      } else if (face.kind == OpenFace::kVelocity) {
         u_n = face.value * face.inward;
-        rho = (tangential_sum + 2.0 * outgoing_sum) / (1.0 - u_n);
+        rho = m = known / (1.0 - u_n);
       } else {
-        rho = face.value;
-        u_n = 1.0 - (tangential_sum + 2.0 * outgoing_sum) / rho;
+        rho = m = face.value;
+        u_n = 1.0 - known / rho;
       }
       double u[3] = {0.0, 0.0, 0.0};
       u[a] = u_n * face.inward;
@@ -56,7 +67,7 @@ void apply_open_face(const OpenFace& face, const BlockLayout& layout,
         const int qo = L::opposite(q);
         const double cu = L::c[q][0] * u[0] + L::c[q][1] * u[1] + L::c[q][2] * u[2];
         const double value =
-            post[qo] + 6.0 * L::w[q] * rho * cu - (L::c[q][t1] * n1 + L::c[q][t2] * n2);
+            post[qo] + 6.0 * L::w[q] * m * cu - (L::c[q][t1] * n1 + L::c[q][t2] * n2);
         f.at(q, cell - off[q]) = static_cast<Real>(value);
       }
     }

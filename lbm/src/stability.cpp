@@ -31,6 +31,11 @@ std::string drive_limit_violation(const FlowDrive& drive) {
   return text;
 }
 
+double compressibility_error_estimate(double density_difference) {
+  const double d = std::abs(density_difference);
+  return d / (1.0 + d);
+}
+
 namespace {
 template <class Visit>
 void for_owned_fluid(const FluidSolver& s, Visit visit) {

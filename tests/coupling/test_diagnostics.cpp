@@ -44,3 +44,24 @@ TEST(Diagnostics, PlaneCrossingsAreCountedWithDirection) {
   p.set_position(1, {9.9, 0, 0});   // back
   EXPECT_EQ(counter.update(p.view(), 40.0, lbm::Communicator{}).count, -2);
 }
+
+// The paper's pressure unit: after one step the on-site faces hold their imposed densities
+// exactly, so P / P_out = (rho_in - rho_out) / rho_out, here with rho_out = 1.2 to tell a
+// division by rho_out from one by rho0 = 1.
+TEST(Diagnostics, PressureLossInUnitsOfTheOutletPressure) {
+  lbm::VoxelGeometry geometry({12, 4, 4});
+  lbm::FluidParameters parameters;
+  parameters.periodic = {false, true, true};
+  lbm::FlowDrive drive;
+  drive.kind = lbm::FlowDrive::kPressureLoss;
+  drive.pressure_loss = 0.05;
+  drive.outlet_density = 1.2;
+  lbm::Box box;
+  box.hi = geometry.dims();
+  lbm::FluidSolver solver(geometry, parameters, drive,
+                          lbm::Decomposition::serial(box, parameters.periodic));
+  solver.step();
+  EXPECT_NEAR(outlet_pressure(solver), 1.2 / 3.0, 1e-15);
+  EXPECT_NEAR(coupling::pressure_loss(solver), 0.05, 1e-12);
+  EXPECT_NEAR(pressure_loss_in_outlet_units(solver), 0.05 / 0.4, 1e-12);  // = 3 dp / rho_out
+}

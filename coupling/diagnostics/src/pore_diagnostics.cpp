@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "lbm/d3q19.h"
 #include "lbm/macroscopic.h"
 
 namespace coupling {
@@ -69,5 +70,16 @@ double fluid_flux(const lbm::FluidSolver& solver, int axis, int index) {
 }
 
 double pressure_loss(const lbm::FluidSolver& solver) { return lbm::pressure_loss(solver); }
+
+double outlet_pressure(const lbm::FluidSolver& solver) {
+  const lbm::FlowDrive& drive = solver.drive();
+  const double rho_out =
+      drive.kind == lbm::FlowDrive::kNone ? solver.parameters().rho0 : drive.outlet_density;
+  return lbm::D3Q19::cs2 * rho_out;
+}
+
+double pressure_loss_in_outlet_units(const lbm::FluidSolver& solver) {
+  return lbm::pressure_loss(solver) / outlet_pressure(solver);
+}
 
 }  // namespace coupling

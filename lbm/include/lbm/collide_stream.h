@@ -19,6 +19,9 @@ struct CollideStreamArgs {
   double omega_plus = 1.0;
   double omega_minus = 1.0;
   std::array<double, 3> force{0.0, 0.0, 0.0};  // body force per unit volume
+  // He & Luo's incompressible equilibrium with reference density rho0 (FluidParameters).
+  bool incompressible = false;
+  double rho0 = 1.0;
 };
 
 // Pull stream + TRT collision (Guo forcing split into its even and odd parts) on every
@@ -29,5 +32,7 @@ void collide_stream(const CollideStreamArgs& args);
 
 // The equilibrium of D3Q19 to second order in u, for one direction.
 double equilibrium(int q, double rho, const std::array<double, 3>& u);
+// He & Luo's incompressible equilibrium: momentum rho0 u, rho only in the zeroth order.
+double incompressible_equilibrium(int q, double rho, double rho0, const std::array<double, 3>& u);
 
 }  // namespace lbm

@@ -28,7 +28,8 @@ NodeMoments node_moments(const PopulationField& f, std::size_t cell,
 // Flux through the plane `index` normal to `axis`: sum(rho u_axis) / rho0 over its fluid
 // nodes (cell area 1). The mass flux is what the scheme conserves exactly at steady state;
 // dividing by the reference density gives the volumetric flux of the incompressible limit
-// (sum(u_axis) differs from it by the density variation, O(Ma^2)).
+// (sum(u_axis) differs from it by the density variation, O(Ma^2)). With the incompressible
+// equilibrium (FluidParameters::incompressible) the conserved momentum is rho0 u: sum(u_axis).
 double plane_flux(const FluidSolver& solver, int axis, int index);
 // Mean pressure p = cs^2 rho over the fluid nodes of a plane.
 double plane_mean_pressure(const FluidSolver& solver, int axis, int index);

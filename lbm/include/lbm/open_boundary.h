@@ -19,6 +19,9 @@ struct OpenFace {
   int local_plane = 0;     // local index of the boundary nodes along axis
   enum Kind { kVelocity, kDensity } kind = kVelocity;
   double value = 0.0;      // normal velocity along +axis (kVelocity) or density (kDensity)
+  // > 0: the momentum is momentum_density * u (He & Luo's incompressible equilibrium with
+  // rho0); 0: the local density's rho u.
+  double momentum_density = 0.0;
 };
 
 // Applies one face to the owned fluid nodes of the block lying on it. The tangential

@@ -1,0 +1,196 @@
+#include "coupling/diagnostics/burst_detector.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace coupling {
+
+std::vector<double> BurstRecord::row() const {
+  return {double(step),         time,
+          peak_pressure,        pressure_after,
+          pressure_drop,        duration,
+          deposited_volume,     deposited_length,
+          double(count_before), double(count_after)};
+}
+
+BurstDetector::BurstDetector(const BurstCriteria& criteria) : criteria_(criteria) {
+  if (!(criteria.fraction > 0.0 && criteria.fraction < 1.0))
+    throw std::invalid_argument("burst fraction must be in (0, 1)");
+  if (criteria.window < 1) throw std::invalid_argument("burst window must be >= 1 fluid step");
+}
+
+BurstRecord BurstDetector::record() const {
+  BurstRecord r;
+  r.step = peak_.step;
+  r.time = peak_.time;
+  r.peak_pressure = peak_.pressure_loss;
+  r.pressure_after = minimum_.pressure_loss;
+  r.pressure_drop = peak_.pressure_loss - minimum_.pressure_loss;
+  r.duration = minimum_.time - peak_.time;
+  r.deposited_volume = peak_.deposited_volume;
+  r.deposited_length = peak_.deposited_length;
+  r.count_before = peak_.deposited_count;
+  r.count_after = minimum_.deposited_count;
+  return r;
+}
+
+std::optional<BurstRecord> BurstDetector::add(const PressureSample& sample) {
+  const double p = sample.pressure_loss;
+  largest_ = std::max(largest_, p);
+
+  std::optional<BurstRecord> done;
+  if (falling_) {
+    if (p > peak_.pressure_loss || sample.fluid_step - floor_.fluid_step > criteria_.window) {
+      done = record();
+      bursts_.push_back(*done);
+      falling_ = false;
+      // The next peak comes after the minimum.
+      for (auto& c : candidates_)
+        if (c.sample.fluid_step <= minimum_.fluid_step) c.is_peak = false;
+    } else {
+      if (p < minimum_.pressure_loss) minimum_ = sample;
+      if (p < floor_.pressure_loss - 0.1 * criteria_.fraction * peak_.pressure_loss)
+        floor_ = sample;
+    }
+  }
+
+  // The candidates: samples of the last window not exceeded since, highest first. The
+  // front is the highest sample of the window; a new sample is a peak if nothing of the
+  // window before it is higher, i.e. if it removes every candidate.
+  while (!candidates_.empty() &&
+         sample.fluid_step - candidates_.front().sample.fluid_step > criteria_.window)
+    candidates_.pop_front();
+  while (!candidates_.empty() && candidates_.back().sample.pressure_loss <= p)
+    candidates_.pop_back();
+  candidates_.push_back({sample, candidates_.empty() && p > 0.0});
+
+  // Only the front can be a peak: any later candidate arrived while the front, higher, was
+  // within its window.
+  const Candidate& front = candidates_.front();
+  if (!falling_ && candidates_.size() > 1 && front.is_peak &&
+      p < (1.0 - criteria_.fraction) * front.sample.pressure_loss) {
+    falling_ = true;
+    peak_ = front.sample;
+    minimum_ = floor_ = sample;
+  }
+  return done;
+}
+
+std::optional<BurstRecord> BurstDetector::flush() {
+  if (!falling_) return std::nullopt;
+  falling_ = false;
+  bursts_.push_back(record());
+  for (auto& c : candidates_)
+    if (c.sample.fluid_step <= minimum_.fluid_step) c.is_peak = false;
+  return bursts_.back();
+}
+
+namespace {
+
+constexpr double kStateVersion = 1.0;
+constexpr int kSampleSize = 7;
+
+void put(std::vector<double>& out, const PressureSample& s) {
+  out.insert(out.end(), {double(s.fluid_step), double(s.step), s.time, s.pressure_loss,
+                         s.deposited_volume, s.deposited_length, double(s.deposited_count)});
+}
+
+PressureSample take(const double* in) {
+  PressureSample s;
+  s.fluid_step = static_cast<long long>(in[0]);
+  s.step = static_cast<long long>(in[1]);
+  s.time = in[2];
+  s.pressure_loss = in[3];
+  s.deposited_volume = in[4];
+  s.deposited_length = in[5];
+  s.deposited_count = static_cast<long long>(in[6]);
+  return s;
+}
+
+BurstRecord take_record(const double* in) {
+  BurstRecord r;
+  r.step = static_cast<long long>(in[0]);
+  r.time = in[1];
+  r.peak_pressure = in[2];
+  r.pressure_after = in[3];
+  r.pressure_drop = in[4];
+  r.duration = in[5];
+  r.deposited_volume = in[6];
+  r.deposited_length = in[7];
+  r.count_before = static_cast<long long>(in[8]);
+  r.count_after = static_cast<long long>(in[9]);
+  return r;
+}
+
+}  // namespace
+
+// Layout: version, largest, falling, #candidates, #bursts, peak, minimum, floor, candidates
+// (sample + is_peak each), bursts (BurstRecord::row() each). Integers are exact in a double
+// up to 2^53.
+std::vector<double> BurstDetector::state() const {
+  std::vector<double> out{kStateVersion, largest_, falling_ ? 1.0 : 0.0, double(candidates_.size()),
+                          double(bursts_.size())};
+  put(out, peak_);
+  put(out, minimum_);
+  put(out, floor_);
+  for (const auto& c : candidates_) {
+    put(out, c.sample);
+    out.push_back(c.is_peak ? 1.0 : 0.0);
+  }
+  for (const auto& b : bursts_) {
+    const auto row = b.row();
+    out.insert(out.end(), row.begin(), row.end());
+  }
+  return out;
+}
+
+void BurstDetector::restore(const std::vector<double>& state) {
+  const std::size_t head = 5 + 3 * kSampleSize;
+  if (state.size() < head || state[0] != kStateVersion)
+    throw std::invalid_argument("burst detector state: not written by this version");
+  const auto candidates = static_cast<std::size_t>(state[3]);
+  const auto bursts = static_cast<std::size_t>(state[4]);
+  if (state.size() != head + candidates * (kSampleSize + 1) + bursts * BurstRecord::kColumns)
+    throw std::invalid_argument("burst detector state: wrong size");
+  largest_ = state[1];
+  falling_ = state[2] != 0.0;
+  peak_ = take(&state[5]);
+  minimum_ = take(&state[5 + kSampleSize]);
+  floor_ = take(&state[5 + 2 * kSampleSize]);
+  const double* in = state.data() + head;
+  candidates_.clear();
+  for (std::size_t i = 0; i < candidates; ++i, in += kSampleSize + 1)
+    candidates_.push_back({take(in), in[kSampleSize] != 0.0});
+  bursts_.clear();
+  for (std::size_t i = 0; i < bursts; ++i, in += BurstRecord::kColumns)
+    bursts_.push_back(take_record(in));
+}
+
+std::string BurstFileWriter::header(const BurstUnits& u) {
+  return "# step time[" + u.time + "] P_peak[" + u.pressure + "] P_after[" + u.pressure +
+         "] delta_P[" + u.pressure + "] delta_t[" + u.time + "] V_dep[" + u.volume + "] L_dep[" +
+         u.length + "] count_before count_after\n";
+}
+
+BurstFileWriter::BurstFileWriter(const std::string& path, const BurstUnits& units) {
+  file_ = std::fopen(path.c_str(), "a");
+  if (!file_) throw std::runtime_error("cannot open the burst file " + path + " for writing");
+  std::fseek(file_, 0, SEEK_END);
+  if (std::ftell(file_) == 0) {
+    std::fputs(header(units).c_str(), file_);
+    std::fflush(file_);
+  }
+}
+
+BurstFileWriter::~BurstFileWriter() {
+  if (file_) std::fclose(file_);
+}
+
+void BurstFileWriter::write(const BurstRecord& r) {
+  std::fprintf(file_, "%lld %.10g %.10g %.10g %.10g %.10g %.10g %.10g %lld %lld\n", r.step, r.time,
+               r.peak_pressure, r.pressure_after, r.pressure_drop, r.duration, r.deposited_volume,
+               r.deposited_length, r.count_before, r.count_after);
+  std::fflush(file_);
+}
+
+}  // namespace coupling

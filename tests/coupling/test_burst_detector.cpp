@@ -1,0 +1,228 @@
+// The online erosive-burst detector on synthetic pressure signals (one sample per fluid step,
+// default criteria: a fall of 10 % within 1000 fluid steps) and its restart state and file.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <functional>
+#include <random>
+#include <sstream>
+#include <string>
+
+#include "coupling/diagnostics/burst_detector.h"
+
+using namespace coupling;
+
+namespace {
+
+// A signal: pressure loss and deposited count at each fluid step. The host step is
+// 100 x the fluid step and the host time half the fluid step, so records show which is which.
+struct Signal {
+  std::function<double(long long)> pressure;
+  std::function<long long(long long)> count = [](long long) { return 0LL; };
+  PressureSample at(long long t) const {
+    PressureSample s;
+    s.fluid_step = t;
+    s.step = 100 * t;
+    s.time = 0.5 * t;
+    s.pressure_loss = pressure(t);
+    s.deposited_count = count(t);
+    s.deposited_volume = 1000.0 * s.deposited_count;
+    s.deposited_length = 2.0 * s.deposited_count;
+    return s;
+  }
+};
+
+std::vector<BurstRecord> detect(const Signal& signal, long long steps, BurstDetector& detector,
+                                long long first = 0) {
+  for (long long t = first; t < steps; ++t) detector.add(signal.at(t));
+  return detector.bursts();
+}
+
+std::vector<BurstRecord> detect(const Signal& signal, long long steps) {
+  BurstDetector detector;
+  return detect(signal, steps, detector);
+}
+
+// A ramp from 0.01 that rises by 1e-5 per step up to `peak_step`, then falls linearly by
+// `drop` (fraction) over `fall_steps`, then stays flat.
+double ramp_and_drop(long long t, long long peak_step, double drop, long long fall_steps) {
+  const double peak = 0.01 + 1e-5 * peak_step;
+  if (t <= peak_step) return 0.01 + 1e-5 * t;
+  const double progress = std::min(1.0, double(t - peak_step) / fall_steps);
+  return peak * (1.0 - drop * progress);
+}
+
+}  // namespace
+
+TEST(BurstDetector, RampThenSharpDropIsOneBurst) {
+  Signal signal;
+  signal.pressure = [](long long t) { return ramp_and_drop(t, 3000, 0.4, 200); };
+  signal.count = [](long long t) { return t <= 3000 ? 10LL : 3LL; };
+  BurstDetector detector;
+  const auto bursts = detect(signal, 6000, detector);
+  ASSERT_EQ(bursts.size(), 1u);
+  const BurstRecord& b = bursts[0];
+  const double peak = 0.01 + 1e-5 * 3000;
+  EXPECT_EQ(b.step, 300000);  // host step of the peak
+  EXPECT_DOUBLE_EQ(b.time, 1500.0);
+  EXPECT_DOUBLE_EQ(b.peak_pressure, peak);
+  EXPECT_NEAR(b.pressure_after, 0.6 * peak, 1e-15);
+  EXPECT_NEAR(b.pressure_drop, 0.4 * peak, 1e-15);
+  EXPECT_DOUBLE_EQ(b.duration, 0.5 * 200);  // peak to minimum, host time
+  EXPECT_DOUBLE_EQ(b.deposited_volume, 10000.0);
+  EXPECT_DOUBLE_EQ(b.deposited_length, 20.0);
+  EXPECT_EQ(b.count_before, 10);
+  EXPECT_EQ(b.count_after, 3);
+  EXPECT_DOUBLE_EQ(detector.largest_pressure_loss(), peak);
+  const auto row = b.row();
+  ASSERT_EQ(row.size(), std::size_t(BurstRecord::kColumns));
+  EXPECT_EQ(row[0], 300000.0);
+  EXPECT_EQ(row[9], 3.0);
+}
+
+TEST(BurstDetector, RecordedAWindowAfterTheFallEnds) {
+  Signal signal;
+  signal.pressure = [](long long t) { return ramp_and_drop(t, 3000, 0.4, 200); };
+  BurstDetector detector;
+  // The fall ends at fluid step 3200; the burst closes a window (1000) later, give or take
+  // the resolution (1 % of the peak: 5 steps of this fall).
+  long long closed = -1;
+  for (long long t = 0; t <= 5000 && closed < 0; ++t)
+    if (detector.add(signal.at(t))) closed = t;
+  EXPECT_GE(closed, 3200 - 5 + 1000);
+  EXPECT_LE(closed, 3200 + 1001);
+  // ... or at once when the pressure loss rises above the peak.
+  signal.pressure = [](long long t) { return t < 3300 ? ramp_and_drop(t, 3000, 0.4, 200) : 1.0; };
+  BurstDetector rising;
+  for (long long t = 0; t < 3300; ++t) EXPECT_FALSE(rising.add(signal.at(t)).has_value());
+  EXPECT_TRUE(rising.add(signal.at(3300)).has_value());
+}
+
+TEST(BurstDetector, OnePercentNoiseOnARampIsNoBurst) {
+  std::mt19937 random(12345);
+  std::uniform_real_distribution<double> noise(-0.01, 0.01);
+  std::vector<double> values(20000);
+  for (std::size_t t = 0; t < values.size(); ++t)  // a ramp, then a plateau
+    values[t] = (0.01 + 1e-6 * std::min<double>(t, 10000)) * (1.0 + noise(random));
+  Signal signal;
+  signal.pressure = [&](long long t) { return values[t]; };
+  EXPECT_TRUE(detect(signal, values.size()).empty());
+}
+
+TEST(BurstDetector, NoisyDropWithAWiggleIsOneBurst) {
+  // A 40 % drop over 600 steps with 1 % noise and a 5 % bump half-way down.
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> noise(-0.01, 0.01);
+  std::vector<double> values(8000);
+  for (std::size_t t = 0; t < values.size(); ++t) {
+    const long long s = t;
+    const double bump = (s > 3300 && s < 3400) ? 1.05 : 1.0;
+    values[t] = ramp_and_drop(s, 3000, 0.4, 600) * bump * (1.0 + noise(random));
+  }
+  Signal signal;
+  signal.pressure = [&](long long t) { return values[t]; };
+  const auto bursts = detect(signal, values.size());
+  ASSERT_EQ(bursts.size(), 1u);
+  const double peak = 0.01 + 1e-5 * 3000;
+  EXPECT_NEAR(bursts[0].peak_pressure, peak, 0.011 * peak);
+  EXPECT_NEAR(bursts[0].pressure_after, 0.6 * peak, 0.011 * peak);
+  // The lowest noise dip on the floor (within a window of the fall's end) is the minimum.
+  EXPECT_GE(bursts[0].duration, 0.5 * 550);
+  EXPECT_LE(bursts[0].duration, 0.5 * (600 + 1000));
+}
+
+TEST(BurstDetector, TwoSeparatedBurstsAreTwo) {
+  Signal signal;
+  signal.pressure = [](long long t) {
+    if (t < 5000) return ramp_and_drop(t, 3000, 0.4, 200);
+    return ramp_and_drop(t - 5000, 4000, 0.3, 100) + 0.6 * 0.04 - 0.01;  // rises again from the low
+  };
+  const auto bursts = detect(signal, 12000);
+  ASSERT_EQ(bursts.size(), 2u);
+  EXPECT_EQ(bursts[0].step, 300000);
+  EXPECT_EQ(bursts[1].step, 900000);
+  EXPECT_NEAR(bursts[1].peak_pressure, 0.064, 1e-12);
+  EXPECT_NEAR(bursts[1].pressure_drop, 0.3 * 0.05, 1e-12);
+  EXPECT_DOUBLE_EQ(bursts[1].duration, 0.5 * 100);
+}
+
+TEST(BurstDetector, SlowDeclineBelowTheThresholdRateIsNoBurst) {
+  // A fall by half, but spread over 20 windows: 2.5 % per window < 10 %.
+  Signal signal;
+  signal.pressure = [](long long t) { return ramp_and_drop(t, 3000, 0.5, 20000); };
+  EXPECT_TRUE(detect(signal, 30000).empty());
+  // The same fall within one window is a burst.
+  signal.pressure = [](long long t) { return ramp_and_drop(t, 3000, 0.5, 900); };
+  EXPECT_EQ(detect(signal, 30000).size(), 1u);
+}
+
+TEST(BurstDetector, StateSaveAndRestoreGivesTheSameRecords) {
+  Signal signal;
+  signal.pressure = [](long long t) {
+    if (t < 5000) return ramp_and_drop(t, 3000, 0.4, 200);
+    return ramp_and_drop(t - 5000, 4000, 0.3, 100) + 0.014;
+  };
+  signal.count = [](long long t) { return (t / 700) % 5; };
+  BurstDetector whole;
+  const auto uninterrupted = detect(signal, 12000, whole);
+  const double uninterrupted_largest = whole.largest_pressure_loss();
+  ASSERT_EQ(uninterrupted.size(), 2u);
+  EXPECT_NEAR(uninterrupted_largest, 0.064, 1e-12);
+  // Splits before, during and after each fall, and while a burst is being followed.
+  for (long long split : {1000LL, 3000LL, 3100LL, 3500LL, 4300LL, 9050LL, 9500LL, 11000LL}) {
+    BurstDetector first;
+    detect(signal, split, first);
+    const std::vector<double> state = first.state();
+    BurstDetector resumed;
+    resumed.restore(state);
+    EXPECT_EQ(resumed.state(), state);
+    const auto bursts = detect(signal, 12000, resumed, split);
+    ASSERT_EQ(bursts.size(), uninterrupted.size()) << "split " << split;
+    for (std::size_t i = 0; i < bursts.size(); ++i)
+      EXPECT_EQ(bursts[i].row(), uninterrupted[i].row()) << "split " << split << " burst " << i;
+    EXPECT_EQ(resumed.largest_pressure_loss(), uninterrupted_largest);
+  }
+  BurstDetector other;
+  EXPECT_THROW(other.restore({2.0, 1.0}), std::invalid_argument);
+}
+
+TEST(BurstDetector, FlushRecordsABurstStillBeingFollowed) {
+  Signal signal;
+  signal.pressure = [](long long t) { return ramp_and_drop(t, 3000, 0.4, 200); };
+  BurstDetector detector;
+  detect(signal, 3500, detector);
+  EXPECT_TRUE(detector.bursts().empty());
+  const auto b = detector.flush();
+  ASSERT_TRUE(b.has_value());
+  EXPECT_DOUBLE_EQ(b->duration, 100.0);
+  EXPECT_FALSE(detector.flush().has_value());
+}
+
+TEST(BurstFileWriter, HeaderOnceThenOneRowPerBurst) {
+  const std::string path = ::testing::TempDir() + "bursts_test.txt";
+  std::remove(path.c_str());
+  BurstUnits units{"fs", "Pa", "um^3", "um"};
+  BurstRecord r;
+  r.step = 42;
+  r.time = 1.5;
+  r.peak_pressure = 2.0;
+  r.pressure_after = 1.0;
+  r.pressure_drop = 1.0;
+  r.duration = 0.25;
+  r.deposited_volume = 300.0;
+  r.deposited_length = 4.0;
+  r.count_before = 7;
+  r.count_after = 2;
+  { BurstFileWriter(path, units).write(r); }
+  { BurstFileWriter(path, units).write(r); }  // a restarted run appends, no second header
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_EQ(text.str(),
+            "# step time[fs] P_peak[Pa] P_after[Pa] delta_P[Pa] delta_t[fs] V_dep[um^3] "
+            "L_dep[um] count_before count_after\n"
+            "42 1.5 2 1 1 0.25 300 4 7 2\n42 1.5 2 1 1 0.25 300 4 7 2\n");
+  EXPECT_THROW(BurstFileWriter("/nonexistent/dir/bursts.txt", units), std::runtime_error);
+}
