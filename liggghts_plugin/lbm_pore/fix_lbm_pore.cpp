@@ -51,6 +51,10 @@ FixLbmPore::FixLbmPore(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg, arg) 
     error->all(FLERR, "fix lbm/pore needs per-atom radii: use atom_style granular (or sphere)");
   vector_flag = 1;
   size_vector = coupling::PoreMonitor::kCount;
+  array_flag = 1;  // f_ID[i][j]: burst i, column j (coupling::BurstRecord)
+  size_array_rows = kBurstRows;
+  size_array_cols = coupling::BurstRecord::kColumns;
+  extarray = 0;
   peratom_flag = 1;  // f_ID[1..3]: each atom's hydrodynamic force (dump custom)
   size_peratom_cols = 3;
   peratom_freq = 1;
@@ -165,8 +169,25 @@ void FixLbmPore::build_lattice() {
   coupling_ = std::make_unique<coupling::SphereCoupling>(*solver_, co);
   lubrication_ = std::make_unique<coupling::LubricationKernel>(lbm_pore::lubrication_kernel(options_, *units_));
   monitor_setup_.criteria.speed_threshold = lbm_pore::deposit_speed_threshold(options_, *units_, drive);
+  monitor_setup_.bursts = lbm_pore::burst_criteria(options_, *units_);
+  const std::string warning = lbm::drive_accuracy_warning(drive);
+  if (!warning.empty() && comm->me == 0) error->warning(FLERR, ("fix lbm/pore: pressure_loss: " + warning).c_str());
   monitor_ = std::make_unique<coupling::PoreMonitor>(monitor_setup_, *units_);
-  if (!restored_values_.empty()) monitor_->restore(restored_values_.data());
+  if (!restored_state_.empty()) {
+    try {
+      monitor_->restore(restored_state_);
+    } catch (const std::invalid_argument& e) {
+      throw lbm::InputError(std::string("restart: ") + e.what());
+    }
+  }
+  if (comm->me == 0 && !options_.burst_file.empty()) {
+    try {
+      monitor_->write_bursts_to(options_.burst_file, lbm_pore::burst_units(update->unit_style));
+    } catch (const std::runtime_error& e) {  // rank 0 only: stop from here
+      lbm_pore::stop_on_this_rank(error, comm->me, screen, logfile,
+                                  (std::string("fix lbm/pore: burst_file: ") + e.what()).c_str());
+    }
+  }
   if (options_.vtk_every > 0)
     vtk_ = std::make_unique<lbm::VtkSeriesWriter>(options_.vtk_directory, "fluid");
 }
@@ -192,6 +213,7 @@ void FixLbmPore::setup(int vflag) {
   find_walls();
   record_particles();
   monitor_->update_fluid(*solver_, fluid_steps_);
+  record_fluid_step();
   if (vtk_ && fluid_steps_ == 0) vtk_->write(*solver_, 0.0);
   post_force(vflag);
 }
@@ -343,6 +365,7 @@ void FixLbmPore::fluid_step() {
   if (fluid_steps_ % kCheckEvery == 0) check_fluid_state();
   monitor_->fluid_changed();
   record_particles();
+  record_fluid_step();
   if (vtk_ && fluid_steps_ % options_.vtk_every == 0)
     vtk_->write(*solver_, units_->time_to_physical(double(fluid_steps_)));
   timer_.add(coupling::RunTimer::kDiagnostics, MPI_Wtime() - diagnostics_start);

@@ -43,6 +43,7 @@ class FixLbmPore : public Fix {
   void post_force(int vflag) override;
   void end_of_step() override;
   double compute_vector(int index) override;
+  double compute_array(int row, int column) override;
   void post_run() override;
   void init_list(int id, class NeighList* list) override;
   void write_restart(FILE* fp) override;
@@ -74,6 +75,9 @@ class FixLbmPore : public Fix {
   // Fluid steps between NaN/runaway scans of the lattice: a full scan costs a sizeable part
   // of a step, and a blow-up takes many steps to reach the particles.
   static constexpr int kCheckEvery = 100;
+  // Rows of the global array of burst records (f_ID[i][j]); later bursts are still written
+  // to the burst file and counted.
+  static constexpr int kBurstRows = 1000;
 
   void build_geometry();
   void build_lattice();
@@ -84,6 +88,7 @@ class FixLbmPore : public Fix {
   void collect_group_pairs();
   void find_walls();
   void record_particles();
+  void record_fluid_step();
   void check_fluid_state();
   void check_particle_speed();
   lbm_pore::AtomCouplingState& own_state(int i);  // resets a slot that held another atom
@@ -100,7 +105,7 @@ class FixLbmPore : public Fix {
   std::unique_ptr<coupling::LubricationKernel> lubrication_;
   coupling::PoreMonitorSetup monitor_setup_;  // from the geometry, before the lattice exists
   std::unique_ptr<coupling::PoreMonitor> monitor_;
-  std::vector<double> restored_values_;       // the monitor's values from a restart file
+  std::vector<double> restored_state_;        // the monitor's state from a restart file
   std::unique_ptr<lbm::VtkSeriesWriter> vtk_;
   lbm_pore::LatticeParticles particles_;
   std::vector<lbm_pore::AtomCouplingState> state_;  // per atom (owned and ghosts)

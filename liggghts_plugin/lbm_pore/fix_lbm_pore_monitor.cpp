@@ -90,6 +90,27 @@ void FixLbmPore::record_particles() {
   monitor_->record_particles(view, bonded_, force_x, solver_->decomposition().comm);
 }
 
+// The pressure loss in units of P_out and the burst detector, after every fluid step; a
+// burst is announced on rank 0 as it is recorded.
+void FixLbmPore::record_fluid_step() {
+  const auto burst = monitor_->record_fluid_step(*solver_, fluid_steps_, update->ntimestep,
+                                                 units_->time_to_physical(double(fluid_steps_)));
+  if (!burst || comm->me != 0) return;
+  char text[400];
+  std::snprintf(text, sizeof text,
+                "fix lbm/pore: erosive burst: the pressure loss fell from %.4g to %.4g P_out (%.0f %%) "
+                "within %g time units after step %lld; %lld deposited particles before, %lld after\n",
+                burst->peak_pressure, burst->pressure_after, 100.0 * burst->pressure_drop / burst->peak_pressure,
+                burst->duration, burst->step, burst->count_before, burst->count_after);
+  lbm_pore::print_to_screen_and_log(screen, logfile, text);
+}
+
+double FixLbmPore::compute_array(int row, int column) {
+  const auto& bursts = monitor_->bursts();
+  if (row < 0 || row >= int(bursts.size()) || column < 0 || column >= coupling::BurstRecord::kColumns) return 0.0;
+  return bursts[row].row()[column];
+}
+
 // Called on every rank by thermo output and variables, so the reductions inside are safe.
 double FixLbmPore::compute_vector(int index) { return monitor_->value(index, *solver_, fluid_steps_); }
 

@@ -20,7 +20,7 @@ using lbm_pore::AtomCouplingState;
 
 // Restart: the particles travel in LIGGGHTS's restart file with their state; the fluid goes
 // to a companion checkpoint (one file per rank) whose name is stored in the restart file,
-// after the monitor's values (the cumulative particle fluxes).
+// after the monitor's state (the cumulative particle fluxes, the burst detector).
 void FixLbmPore::write_restart(FILE* fp) {
   std::string prefix = options_.checkpoint_prefix.empty() ? std::string(id) + ".fluid"
                                                           : options_.checkpoint_prefix;
@@ -34,19 +34,23 @@ void FixLbmPore::write_restart(FILE* fp) {
     lbm_pore::stop_on_this_rank(error, comm->me, screen, logfile, e.what());
   }
   if (comm->me == 0) {
-    const auto& values = monitor_->values();
-    const int size = static_cast<int>(path.size()) + 1 + 8 * static_cast<int>(values.size());
+    const std::vector<double> state = monitor_->state();
+    const double count = double(state.size());
+    const int size = static_cast<int>(sizeof(double) * (state.size() + 1) + path.size() + 1);
     std::fwrite(&size, sizeof(int), 1, fp);
-    std::fwrite(values.data(), sizeof(double), values.size(), fp);
+    std::fwrite(&count, sizeof(double), 1, fp);
+    std::fwrite(state.data(), sizeof(double), state.size(), fp);
     std::fwrite(path.c_str(), 1, path.size() + 1, fp);
   }
 }
 
+// buf: the monitor's state (its length first), then the checkpoint path.
 void FixLbmPore::restart(char* buf) {
-  restored_values_.resize(coupling::PoreMonitor::kCount);
-  std::memcpy(restored_values_.data(), buf, sizeof(double) * restored_values_.size());
-  resume_checkpoint_ = std::string(buf + sizeof(double) * restored_values_.size());
-  if (monitor_) monitor_->restore(restored_values_.data());
+  double count = 0.0;
+  std::memcpy(&count, buf, sizeof(double));
+  restored_state_.resize(static_cast<std::size_t>(count));
+  std::memcpy(restored_state_.data(), buf + sizeof(double), sizeof(double) * restored_state_.size());
+  resume_checkpoint_ = std::string(buf + sizeof(double) * (restored_state_.size() + 1));
 }
 
 void FixLbmPore::grow_arrays(int nmax) {

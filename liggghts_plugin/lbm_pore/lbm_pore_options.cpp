@@ -150,6 +150,7 @@ PoreOptions parse_pore_options(const std::vector<std::string>& args) {
       o.deposit_speed = words.number(key, 0.0, kInf, false);
     } else if (key == "burst_drop") {
       o.burst_drop = words.number(key, 0.0, 1.0);
+      if (o.burst_drop >= 1.0) fail("keyword 'burst_drop' = 1: must be a number in (0, 1) (a fall of the whole peak never ends)");
     } else if (key == "burst_window") {
       o.burst_window = words.number(key, 0.0, kInf);
     } else if (key == "burst_file") {

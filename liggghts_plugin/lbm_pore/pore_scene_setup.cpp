@@ -1,5 +1,6 @@
 #include "pore_scene_setup.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -80,6 +81,25 @@ double deposit_speed_threshold(const PoreOptions& o, const coupling::UnitConvers
   if (drive.kind == lbm::FlowDrive::kInletVelocity)
     return coupling::kDepositSpeedFraction * std::abs(drive.inlet_velocity);
   return coupling::DepositionCriteria{}.speed_threshold;
+}
+
+coupling::BurstCriteria burst_criteria(const PoreOptions& o, const coupling::UnitConversion& units) {
+  coupling::BurstCriteria criteria;
+  criteria.fraction = o.burst_drop;
+  if (o.burst_window > 0.0)
+    criteria.window = std::max(1LL, std::llround(o.burst_window / units.dt_lbm()));
+  return criteria;
+}
+
+coupling::BurstUnits burst_units(const std::string& unit_style) {
+  coupling::BurstUnits units;
+  units.pressure = "P_out";
+  if (unit_style == "si" || unit_style == "cgs") {
+    units.time = "s";
+    units.length = unit_style == "si" ? "m" : "cm";
+    units.volume = units.length + "^3";
+  }
+  return units;
 }
 
 coupling::UnitInputs unit_inputs(const PoreOptions& o, double dt_dem) {

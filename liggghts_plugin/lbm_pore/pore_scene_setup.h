@@ -37,6 +37,12 @@ void check_boundaries(const PoreOptions& options, const int* periodicity);
 double deposit_speed_threshold(const PoreOptions& options, const coupling::UnitConversion& units,
                                const lbm::FlowDrive& drive);
 
+// The burst detector's criteria: burst_drop, and burst_window in fluid steps (default 1000).
+coupling::BurstCriteria burst_criteria(const PoreOptions& options, const coupling::UnitConversion& units);
+
+// Unit names for the burst file's header, from LIGGGHTS's unit style (pressures in P_out).
+coupling::BurstUnits burst_units(const std::string& unit_style);
+
 // The unit conversion's inputs: the options' dx, rho, nu, n_dem and the script's time step.
 coupling::UnitInputs unit_inputs(const PoreOptions& options, double dt_dem);
 

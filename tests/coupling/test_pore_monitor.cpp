@@ -80,6 +80,6 @@ TEST(PoreMonitor, DepositsAndCrossingsInHostUnits) {
   EXPECT_NEAR(monitor.values()[PoreMonitor::kParticlesInVolume], 4.0 / 3.0 * M_PI * 8.0, 1e-12);
 
   PoreMonitor resumed(setup, units);
-  resumed.restore(monitor.values().data());
+  resumed.restore(monitor.state());
   EXPECT_EQ(resumed.values(), monitor.values());
 }

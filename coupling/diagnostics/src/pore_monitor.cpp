@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "lbm/macroscopic.h"
 #include "lbm/stability.h"
@@ -43,7 +44,8 @@ PoreMonitor::PoreMonitor(const PoreMonitorSetup& setup, const UnitConversion& un
       units_(units),
       inlet_counter_(setup.pore.axis, setup.inlet_plane),
       outlet_counter_(setup.pore.axis, setup.outlet_plane),
-      values_(kCount, 0.0) {}
+      values_(kCount, 0.0),
+      detector_(setup.bursts) {}
 
 void PoreMonitor::record_particles(const ParticleView& view, const std::vector<char>& bonded,
                                    double local_force_x, const lbm::Communicator& comm) {
@@ -89,6 +91,46 @@ void PoreMonitor::update_fluid(const lbm::FluidSolver& solver, long long fluid_s
   v[kFluidSteps] = double(fluid_steps);
 }
 
-void PoreMonitor::restore(const double* values) { std::copy(values, values + kCount, values_.begin()); }
+std::optional<BurstRecord> PoreMonitor::record_fluid_step(const lbm::FluidSolver& solver, long long fluid_step,
+                                                          long long step, double time) {
+  const double pressure = pressure_loss_in_outlet_units(solver);
+  values_[kPressureLossOutlet] = pressure;
+  if (fluid_step <= last_burst_sample_) return std::nullopt;
+  last_burst_sample_ = fluid_step;
+  PressureSample sample;
+  sample.fluid_step = fluid_step;
+  sample.step = step;
+  sample.time = time;
+  sample.pressure_loss = pressure;
+  sample.deposited_volume = values_[kDepositedVolume];
+  sample.deposited_length = values_[kDepositedLength];
+  sample.deposited_count = static_cast<long long>(values_[kDepositedCount]);
+  auto burst = detector_.add(sample);
+  values_[kLargestPressureLoss] = detector_.largest_pressure_loss();
+  values_[kBurstCount] = double(detector_.bursts().size());
+  if (burst && burst_file_) burst_file_->write(*burst);
+  return burst;
+}
+
+void PoreMonitor::write_bursts_to(const std::string& path, const BurstUnits& units) {
+  burst_file_ = std::make_unique<BurstFileWriter>(path, units);
+}
+
+std::vector<double> PoreMonitor::state() const {
+  std::vector<double> state = values_;
+  state.push_back(double(last_burst_sample_));
+  const auto detector = detector_.state();
+  state.insert(state.end(), detector.begin(), detector.end());
+  return state;
+}
+
+void PoreMonitor::restore(const std::vector<double>& state) {
+  if (state.size() < std::size_t(kCount) + 1)
+    throw std::invalid_argument("pore monitor: restart state of " + std::to_string(state.size()) +
+                                " values, expected at least " + std::to_string(kCount + 1));
+  std::copy(state.begin(), state.begin() + kCount, values_.begin());
+  last_burst_sample_ = static_cast<long long>(state[kCount]);
+  detector_.restore(std::vector<double>(state.begin() + kCount + 1, state.end()));
+}
 
 }  // namespace coupling

@@ -3,8 +3,12 @@
 // once per fluid step with the particles and reads the values in its own units, which a
 // LIGGGHTS fix exposes as its global vector (f_ID[1..]). The fluid quantities need a scan of
 // the lattice, so they are computed only when read after the fluid changed.
+#include <memory>
+#include <optional>
+#include <string>
 #include <vector>
 
+#include "coupling/diagnostics/burst_detector.h"
 #include "coupling/diagnostics/pore_diagnostics.h"
 #include "coupling/particle_view.h"
 #include "coupling/unit_conversion.h"
@@ -21,6 +25,7 @@ struct PoreMonitorSetup {
   double outlet_plane = 0.0;
   int flow_length = 0;          // nodes along the flow axis (the counters' wrap-around test)
   DepositionCriteria criteria;  // speed threshold of a deposit (lattice units)
+  BurstCriteria bursts;         // what counts as an erosive burst (window in fluid steps)
 };
 
 // The paper's scene: "located inside the pore radius" (Sec. III) is the pore's cylinder,
@@ -50,6 +55,9 @@ class PoreMonitor {
     kParticlesOutVolume,  // ... and the outlet plane
     kHydroForceX,         // total hydrodynamic force on the group along the flow (force units)
     kMaxParticleShift,    // largest particle displacement per fluid step, in cells
+    kPressureLossOutlet,  // the pressure loss in units of the outlet pressure, P / P_out
+    kLargestPressureLoss, // the largest P / P_out of the run so far
+    kBurstCount,          // erosive bursts recorded so far
     kCount
   };
 
@@ -69,9 +77,22 @@ class PoreMonitor {
   double value(int quantity, const lbm::FluidSolver& solver, long long fluid_steps);
   void update_fluid(const lbm::FluidSolver& solver, long long fluid_steps);
 
-  // The values as they are, for a restart file, and back (cumulative fluxes survive).
+  // After each fluid step (collective): the pressure loss in units of P_out, fed to the
+  // burst detector with the deposits of record_particles(); returns the burst this step
+  // completed, if any (also appended to bursts() and written to the burst file). A fluid
+  // step already recorded (the setup of a later run) only refreshes P / P_out.
+  std::optional<BurstRecord> record_fluid_step(const lbm::FluidSolver& solver, long long fluid_step,
+                                               long long step, double time);
+  const std::vector<BurstRecord>& bursts() const { return detector_.bursts(); }
+  // Rank 0 of a host: append each burst to `path` (header with these unit names). Throws
+  // std::runtime_error naming the file when it cannot be opened.
+  void write_bursts_to(const std::string& path, const BurstUnits& units);
+
   const std::vector<double>& values() const { return values_; }
-  void restore(const double* values);
+  // Everything a restart needs (the values, with the cumulative fluxes, and the burst
+  // detector's state), and back; restore throws std::invalid_argument on a foreign vector.
+  std::vector<double> state() const;
+  void restore(const std::vector<double>& state);
 
   const PoreMonitorSetup& setup() const { return setup_; }
 
@@ -81,6 +102,9 @@ class PoreMonitor {
   PlaneCrossingCounter inlet_counter_, outlet_counter_;
   std::vector<double> values_;
   bool fluid_stale_ = true;
+  BurstDetector detector_;
+  long long last_burst_sample_ = -1;  // the fluid step last fed to the detector
+  std::unique_ptr<BurstFileWriter> burst_file_;
 };
 
 }  // namespace coupling
