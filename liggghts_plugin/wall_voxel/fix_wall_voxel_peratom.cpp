@@ -5,8 +5,9 @@
 #include <string>
 
 #include "atom.h"
-#include "error.h"
+#include "comm.h"
 #include "fix_wall_voxel.h"
+#include "plugin_common/stop_run.h"
 
 using namespace LAMMPS_NS;
 
@@ -25,7 +26,8 @@ int FixWallVoxel::pack_exchange(int i, double* buf) {
 
 int FixWallVoxel::unpack_exchange(int nlocal, double* buf) {
   if (!model_->unpack(nlocal, buf))
-    error->one(FLERR, "fix wall/voxel: an atom arrived from another rank with corrupt springs");
+    lbm_pore::stop_on_this_rank(error, comm->me, screen, logfile,
+                                "fix wall/voxel: an atom arrived from another rank with corrupt springs");
   return model_->packed_size();
 }
 
@@ -47,16 +49,18 @@ void FixWallVoxel::unpack_restart(int nlocal, int nth) {
         known ? std::string("model ") +
                     lbm_pore::wall_model_name(static_cast<lbm_pore::WallModelKind>(code))
               : std::string("an older version of lbm-pore");
-    error->one(FLERR, (std::string("fix wall/voxel: the restart file holds springs written by ") +
-                       written + ", this fix has model " +
-                       lbm_pore::wall_model_name(model_kind_) +
-                       ": give the same model, or a new fix ID to start the springs from zero")
-                          .c_str());
+    const std::string text = "fix wall/voxel: the restart file holds springs written by " +
+                             written + ", this fix has model " +
+                             lbm_pore::wall_model_name(model_kind_) +
+                             ": give the same model, or a new fix ID to start the springs from zero";
+    lbm_pore::stop_on_this_rank(error, comm->me, screen, logfile, text.c_str());
   }
   if (static_cast<int>(record[0]) != model_->packed_size() + kRestartHeader ||
       !model_->unpack(nlocal, record + kRestartHeader))
-    error->one(FLERR, "fix wall/voxel: the restart file's springs are corrupt (not a packed set "
-                      "of this model's springs); restart from a file written by this version");
+    lbm_pore::stop_on_this_rank(error, comm->me, screen, logfile,
+                                "fix wall/voxel: the restart file's springs are corrupt (not a "
+                                "packed set of this model's springs); restart from a file written "
+                                "by this version");
 }
 
 int FixWallVoxel::size_restart(int /*nlocal*/) { return model_->packed_size() + kRestartHeader; }
