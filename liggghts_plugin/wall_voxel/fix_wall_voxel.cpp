@@ -118,7 +118,7 @@ FixWallVoxel::FixWallVoxel(LAMMPS* lmp, int narg, char** arg)
   atom->add_callback(0);  // grow/copy/exchange
   atom->add_callback(1);  // restart
   // Each migrating atom carries its springs (257 doubles for voxel_sum).
-  comm->maxexchange_fix += model_->packed_size() + 2;
+  comm->maxexchange_fix += model_->packed_size();
 }
 
 void FixWallVoxel::parse_contact_keyword(int& iarg, int narg, char** arg) {

@@ -6,9 +6,9 @@ and, where named, the lattice reading (k_w = k_a = 0.1). Every threshold is comp
 from the voxel geometry and the coefficients (voxel_sum_reference.py), independently of the
 library; each check prints its measured figure and its bound (tests/harness/liggghts_run.py).
 
-usage: wall_check.py --driver PATH --scripts DIR CASE
+usage: wall_check.py --driver PATH --scripts DIR [--mpirun mpirun] CASE
 cases: hold_slide_d_unit, hold_slide_lattice, pull_off_d_unit, pull_off_lattice, edge, corner,
-       energy, restart_voxel_sum, restart_smooth, spring_overflow
+       energy, restart_voxel_sum, restart_smooth, spring_overflow, parallel
 """
 import math
 import os
@@ -341,6 +341,27 @@ def spring_overflow(h):
           f"{warnings} warnings in {len(rows)} runs", "one per run")
 
 
+def parallel(h):
+    """The springs travel with their atom between ranks: a particle pushed along the floor
+    from x = 20 with a force above the sliding threshold for 5 cells slides across the rank
+    boundary at x = 24 and comes to rest; 1 and 2 ranks give the same thermo rows."""
+    coef = D_UNIT
+    z_rest = ref.balanced_height(FLOOR, coef, 20.0, 12.0, 0.0, (0, 0, 0),
+                                 FLOOR_TOP + coef.reach() - 1e-9)
+    common = variables(h, coef, FLOOR, x0=20.0, y0=12.0, z0=z_rest + 0.01, every=100,
+                       steps=20000, ramp=ramp([(6000, 0.0), (9000, 2.3)]), fx=1, leash=5.0)
+    serial = thermo_rows(h.run("in.wall_run", common).output)
+    split = thermo_rows(h.run("in.wall_run", common, ranks=2).output)
+    worst = max(abs(a[k] - b[k]) for a, b in zip(serial, split) for k in a)
+    end = serial[-1]
+    check("parallel_crosses_the_rank_boundary", end["px"] > 26.0 and end["wall[1]"] == 9,
+          f"from x = 20 to {end['px']:.3f}, {end['wall[1]']:.0f} contacts at rest",
+          "beyond x = 24 + R, held by 9 voxels")
+    check("parallel_serial_vs_2_ranks", len(serial) == len(split) and worst < 1e-9,
+          f"largest difference {worst:.2e} over {len(serial)} vs {len(split)} rows",
+          "< 1e-9, the same rows")
+
+
 if __name__ == "__main__":
     main({"hold_slide_d_unit": lambda h: hold_slide(h, D_UNIT),
           "hold_slide_lattice": lambda h: hold_slide(h, LATTICE),
@@ -349,4 +370,4 @@ if __name__ == "__main__":
           "edge": edge, "corner": corner, "energy": energy,
           "restart_voxel_sum": lambda h: restart(h, "voxel_sum"),
           "restart_smooth": lambda h: restart(h, "smooth"),
-          "spring_overflow": spring_overflow}, __doc__)
+          "spring_overflow": spring_overflow, "parallel": parallel}, __doc__)
