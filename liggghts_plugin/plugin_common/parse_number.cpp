@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <string>
 
 #include "error.h"
@@ -49,6 +50,22 @@ int parse_integer(LAMMPS_NS::Error* error, const char* command, const char* keyw
     error->all(FLERR, message);
   }
   return static_cast<int>(value);
+}
+
+int parse_choice(LAMMPS_NS::Error* error, const char* command, const char* keyword,
+                 const char* text, std::initializer_list<const char*> choices) {
+  int position = 0;
+  std::string valid;
+  for (const char* choice : choices) {
+    if (std::strcmp(text, choice) == 0) return position;
+    if (position > 0) valid += position + 1 == static_cast<int>(choices.size()) ? " or " : ", ";
+    valid += choice;
+    ++position;
+  }
+  const std::string message = std::string(command) + ": " + keyword + " must be " + valid +
+                              " (got '" + text + "')";
+  error->all(FLERR, message.c_str());
+  return -1;  // not reached: error->all stops the run
 }
 
 }  // namespace lbm_pore

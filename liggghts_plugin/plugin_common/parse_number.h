@@ -1,6 +1,8 @@
 #pragma once
-// Keyword values of our styles: a number in a range, or a LIGGGHTS error naming the command,
-// the keyword and the valid range.
+// Keyword values of our styles: a number in a range or one word of a list, or a LIGGGHTS error
+// naming the command, the keyword and the valid range or words.
+#include <initializer_list>
+
 namespace LAMMPS_NS {
 class Error;
 }
@@ -15,5 +17,10 @@ double parse_number(LAMMPS_NS::Error* error, const char* command, const char* ke
 // Integer variant: min <= value <= max.
 int parse_integer(LAMMPS_NS::Error* error, const char* command, const char* keyword,
                   const char* text, int min, int max);
+
+// The position of `text` in `choices`, else error->all with
+// "<command>: <keyword> must be <a>, <b> or <c> (got '<text>')".
+int parse_choice(LAMMPS_NS::Error* error, const char* command, const char* keyword,
+                 const char* text, std::initializer_list<const char*> choices);
 
 }  // namespace lbm_pore

@@ -21,15 +21,13 @@
 #include "wall_geometry_source.h"
 
 using namespace LAMMPS_NS;
+using lbm_pore::parse_choice;
 using lbm_pore::parse_integer;
 using lbm_pore::parse_number;
 
 namespace {
 constexpr const char* kCommand = "fix wall/voxel";
 constexpr double kBig = 1e300;
-// Contacts of consecutive steps are the same contact when their normals are this close
-// (cos 25 deg): a sphere rolling over an edge turns its normal slowly.
-constexpr double kSameContactCosine = 0.9;
 
 // The words of this style's guard messages, in the order of lbm_pore::GuardWording.
 const lbm_pore::GuardWording kGuardWording{kCommand, "wall contact time", "the lightest particle",
@@ -61,6 +59,12 @@ FixWallVoxel::FixWallVoxel(LAMMPS* lmp, int narg, char** arg)
     } else if (key == "pore") {
       source.kind = lbm_pore::WallGeometrySource::Kind::kPoreScene;
       iarg += 1;
+    } else if (key == "model") {
+      need(1);
+      model_kind_ = parse_choice(error, kCommand, "model", arg[iarg + 1], {"smooth", "voxel_sum"}) == 1
+                        ? lbm_pore::WallModelKind::kVoxelSum
+                        : lbm_pore::WallModelKind::kSmooth;
+      iarg += 2;
     } else if (key == "inlet_length" || key == "free_length" || key == "pore_length" ||
                key == "outlet_length" || key == "width") {
       need(1);
@@ -104,13 +108,17 @@ FixWallVoxel::FixWallVoxel(LAMMPS* lmp, int narg, char** arg)
   }
 
   vector_flag = 1;
-  size_vector = 6;
+  size_vector = 7;
   global_freq = 1;
-  extvector = -1;  // contacts and forces extensive; the time step limit and overlap ratio not
-  extlist = new int[6]{1, 1, 1, 1, 0, 0};
+  extvector = -1;  // contacts, forces and dropped springs extensive; the limit and ratio not
+  extlist = new int[7]{1, 1, 1, 1, 0, 0, 1};
+  restart_peratom = 1;
 
   grow_arrays(atom->nmax);
-  atom->add_callback(0);
+  atom->add_callback(0);  // grow/copy/exchange
+  atom->add_callback(1);  // restart
+  // Each migrating atom carries its springs (257 doubles for voxel_sum).
+  comm->maxexchange_fix += model_->packed_size();
 }
 
 void FixWallVoxel::parse_contact_keyword(int& iarg, int narg, char** arg) {
@@ -135,9 +143,9 @@ void FixWallVoxel::parse_contact_keyword(int& iarg, int narg, char** arg) {
     tangential_damping_given_ = true;
   } else {
     error->all(FLERR, (std::string(kCommand) + ": unknown keyword '" + key +
-                       "' (expected file, pore, inlet_length, free_length, pore_length, "
-                       "outlet_length, width, pore_diameter, spacing, origin, kw, ka, damping, "
-                       "mu, kt or tangential_damping)")
+                       "' (expected lbm, file, pore, inlet_length, free_length, pore_length, "
+                       "outlet_length, width, pore_diameter, spacing, origin, model, kw, ka, "
+                       "damping, mu, kt or tangential_damping)")
                           .c_str());
   }
   iarg += 2;
@@ -145,6 +153,7 @@ void FixWallVoxel::parse_contact_keyword(int& iarg, int narg, char** arg) {
 
 FixWallVoxel::~FixWallVoxel() {
   atom->delete_callback(id, 0);
+  atom->delete_callback(id, 1);
   delete[] extlist;
   extlist = nullptr;
 }
@@ -165,8 +174,8 @@ std::shared_ptr<const lbm::VoxelGeometry> FixWallVoxel::geometry_of_lbm_fix(cons
 }
 
 void FixWallVoxel::use_geometry(std::shared_ptr<const lbm::VoxelGeometry> geometry) {
-  geometry_ = std::move(geometry);
-  surface_ = std::make_unique<contact::VoxelSurface>(*geometry_);
+  model_ = lbm_pore::make_wall_model(model_kind_, params_, std::move(geometry));
+  model_->grow(atom->nmax);
 }
 
 void FixWallVoxel::init() {
@@ -174,18 +183,24 @@ void FixWallVoxel::init() {
     error->all(FLERR, "fix wall/voxel needs per-atom radius and mass (atom_style granular or sphere)");
   check_time_step();
   guards_.start_run();
+  springs_warned_ = false;
 }
 
 // Called at init and whenever the global atom count changes (insertion), by every rank.
 void FixWallVoxel::check_time_step() {
   const std::optional<double> min_mass = guards_.lightest_mass(groupbit);
   if (!min_mass) return;  // no particles yet
-  lbm_pore::TimeStepFinding found;
-  found.stiffness_name = contact::wall_tangential_spring_is_stiffer(params_) ? "kt" : "kw";
-  found.stiffness = contact::wall_stiffest_spring(params_).k_n;
-  found.lightest_mass = *min_mass;
-  found.limit = contact::wall_time_step_limit(params_, *min_mass);
-  guards_.check_time_step(found);
+  // The voxel sum's stiffness grows with the radius (k_a R per adhering voxel): take the
+  // largest radius among the lightest particles.
+  double radius = 0.0;
+  if (model_kind_ == lbm_pore::WallModelKind::kVoxelSum) {
+    double local_radius = 0.0;
+    for (int i = 0; i < atom->nlocal; ++i)
+      if ((atom->mask[i] & groupbit) && atom->rmass[i] == *min_mass)
+        local_radius = std::max(local_radius, atom->radius[i]);
+    MPI_Allreduce(&local_radius, &radius, 1, MPI_DOUBLE, MPI_MAX, world);
+  }
+  guards_.check_time_step(model_->time_step(*min_mass, radius));
 }
 
 void FixWallVoxel::stop_on_non_finite(int i, const char* what) {
@@ -217,70 +232,41 @@ void FixWallVoxel::post_force(int /*vflag*/) {
   if (guards_.atom_count_changed()) check_time_step();
   double worst_overlap = 0.0;
   int worst_i = -1;
+  int dropped = 0, dropped_i = -1;
 
-  constexpr int kStride = kMaxContacts * kHistoryPerContact;
-  double fresh[kStride];
   for (int i = 0; i < nlocal; ++i) {
-    double* history = &history_[static_cast<std::size_t>(i) * kStride];
     if (!(mask[i] & groupbit)) continue;
-    // A NaN centre would send the surface search out of bounds; a NaN force (from the pair,
+    // A NaN centre would send the voxel search out of bounds; a NaN force (from the pair,
     // the fluid or a fix before this one) would make the position NaN at the next step.
     if (!std::isfinite(x[i][0] + x[i][1] + x[i][2] + f[i][0] + f[i][1] + f[i][2]))
       stop_on_non_finite(i, std::isfinite(x[i][0] + x[i][1] + x[i][2]) ? "force" : "position");
-    const double reach = contact::wall_contact_reach(params_, radius[i]);
-    const contact::Vec3 centre{x[i][0], x[i][1], x[i][2]};
-    surface_->find(centre, reach, points_);
-    if (points_.empty()) {
-      std::fill(history, history + kStride, 0.0);
-      continue;
+    lbm_pore::WallParticle particle;
+    particle.centre = {x[i][0], x[i][1], x[i][2]};
+    particle.velocity = {v[i][0], v[i][1], v[i][2]};
+    particle.radius = radius[i];
+    particle.mass = rmass[i];
+    particle.dt = dt;
+    const lbm_pore::WallForce wall = model_->apply(i, particle);
+    if (!wall.touching) continue;
+    if (wall.max_overlap_ratio > worst_overlap) {
+      worst_overlap = wall.max_overlap_ratio;
+      worst_i = i;
     }
-    std::fill(fresh, fresh + kStride, 0.0);
-    bool used[kMaxContacts] = {};
-    int stored = 0;
-    contact::Vec3 total;
-    for (const contact::SurfacePoint& point : points_) {
-      contact::WallContactInput in;
-      in.normal = point.normal;
-      in.gap = point.distance - radius[i];
-      in.radius = radius[i];
-      in.mass = rmass[i];
-      in.velocity = {v[i][0], v[i][1], v[i][2]};
-      in.dt = dt;
-      // The same contact as last step: the stored normal that points the same way.
-      for (int s = 0; s < kMaxContacts; ++s) {
-        const double* slot = history + s * kHistoryPerContact;
-        const contact::Vec3 old_normal{slot[0], slot[1], slot[2]};
-        if (!used[s] && contact::dot(old_normal, point.normal) > kSameContactCosine) {
-          used[s] = true;
-          in.spring = {slot[3], slot[4], slot[5]};
-          break;
-        }
-      }
-      const contact::WallContactResult result = contact::wall_contact_force(params_, in);
-      total += result.force;
-      if (in.gap < 0.0 && -in.gap > worst_overlap * radius[i]) {
-        worst_overlap = -in.gap / radius[i];
-        worst_i = i;
-      }
-      if (result.active) {
-        local_stats_[0] += 1.0;
-        if (stored < kMaxContacts) {
-          double* slot = fresh + stored * kHistoryPerContact;
-          slot[0] = point.normal.x; slot[1] = point.normal.y; slot[2] = point.normal.z;
-          slot[3] = result.spring.x; slot[4] = result.spring.y; slot[5] = result.spring.z;
-          ++stored;
-        }
-      }
+    if (wall.springs_dropped > 0) {
+      dropped += wall.springs_dropped;
+      dropped_i = i;
     }
-    std::copy(fresh, fresh + kStride, history);
+    const contact::Vec3& total = wall.force;
     f[i][0] += total.x;
     f[i][1] += total.y;
     f[i][2] += total.z;
     if (!std::isfinite(total.x + total.y + total.z)) stop_on_non_finite(i, "wall force");
+    local_stats_[0] += wall.contacts;
     local_stats_[1] += total.x;
     local_stats_[2] += total.y;
     local_stats_[3] += total.z;
   }
+  if (dropped > 0) report_dropped_springs(dropped_i, dropped);
   local_stats_[4] = worst_overlap;
   if (guards_.overlap_needs_report(worst_overlap)) {
     char subject[200];
@@ -290,34 +276,37 @@ void FixWallVoxel::post_force(int /*vflag*/) {
   }
 }
 
+// A contact beyond the model's spring capacity still acts but its friction restarts from
+// zero every step: never silent (doc/wall_models.md).
+void FixWallVoxel::report_dropped_springs(int i, int dropped) {
+  local_springs_dropped_ += dropped;
+  if (springs_warned_) return;
+  springs_warned_ = true;
+  char text[600];
+  std::snprintf(text, sizeof text,
+                "fix wall/voxel: %d wall contact(s) on this rank found no room for their "
+                "tangential spring at step " BIGINT_FORMAT " (model %s keeps %d per particle; "
+                "particle %d at (%g %g %g) among them): their friction restarts from zero each "
+                "step. f_%s[7] counts them; coarser voxels or a stiffer kw (smaller overlaps) "
+                "need fewer (warning once per run)",
+                dropped, update->ntimestep, lbm_pore::wall_model_name(model_kind_),
+                model_->spring_capacity(), atom->tag[i], atom->x[i][0], atom->x[i][1],
+                atom->x[i][2], id);
+  if (screen)
+    error->warning(FLERR, text);
+  else
+    std::fprintf(stderr, "WARNING on proc %d: %s\n", comm->me, text);
+}
+
 double FixWallVoxel::compute_vector(int index) {
   if (index == 4) return guards_.time_step_limit();
   if (!stats_reduced_) {
     MPI_Allreduce(local_stats_, global_stats_, 4, MPI_DOUBLE, MPI_SUM, world);
     MPI_Allreduce(&local_stats_[4], &global_stats_[4], 1, MPI_DOUBLE, MPI_MAX, world);
+    MPI_Allreduce(&local_springs_dropped_, &global_springs_dropped_, 1, MPI_DOUBLE, MPI_SUM,
+                  world);
     stats_reduced_ = true;
   }
+  if (index == 6) return global_springs_dropped_;
   return index == 5 ? global_stats_[4] : global_stats_[index];
-}
-
-void FixWallVoxel::grow_arrays(int nmax) {
-  history_.resize(static_cast<std::size_t>(nmax) * kMaxContacts * kHistoryPerContact, 0.0);
-}
-
-void FixWallVoxel::copy_arrays(int i, int j, int /*delflag*/) {
-  constexpr int kStride = kMaxContacts * kHistoryPerContact;
-  std::copy_n(&history_[static_cast<std::size_t>(i) * kStride], kStride,
-              &history_[static_cast<std::size_t>(j) * kStride]);
-}
-
-int FixWallVoxel::pack_exchange(int i, double* buf) {
-  constexpr int kStride = kMaxContacts * kHistoryPerContact;
-  std::copy_n(&history_[static_cast<std::size_t>(i) * kStride], kStride, buf);
-  return kStride;
-}
-
-int FixWallVoxel::unpack_exchange(int nlocal, double* buf) {
-  constexpr int kStride = kMaxContacts * kHistoryPerContact;
-  std::copy_n(buf, kStride, &history_[static_cast<std::size_t>(nlocal) * kStride]);
-  return kStride;
 }

@@ -88,6 +88,7 @@ VoxelSumResult voxel_sum_wall_force(const WallContactParams& params, const Voxel
     hi[a] = std::min(dims[a] - 1, static_cast<int>(std::floor(u + reach_cells + 0.5)));
     if (lo[a] > hi[a]) return out;
   }
+  if (in.blocks != nullptr && !in.blocks->any_solid(lo, hi)) return out;
   const bool keep_springs = params.friction.mu > 0.0;
   for (int k = lo[2]; k <= hi[2]; ++k)
     for (int j = lo[1]; j <= hi[1]; ++j)
@@ -115,6 +116,18 @@ VoxelSumResult voxel_sum_wall_force(const WallContactParams& params, const Voxel
         if (keep_springs && !out.springs.add(key, result.spring)) ++out.springs_dropped;
       }
   return out;
+}
+
+double voxel_sum_resting_stiffness(const WallContactParams& params, double radius) {
+  constexpr int kAdheringNeighbours = 8;  // the ring around the voxel under the centre
+  return params.normal.k_n + kAdheringNeighbours * params.adhesion.k_a * radius;
+}
+
+TimeStepLimit voxel_sum_time_step_limit(const WallContactParams& params, double radius,
+                                        double mass) {
+  DashDotParams stiffest = params.normal;
+  stiffest.k_n = std::max(voxel_sum_resting_stiffness(params, radius), params.friction.k_t);
+  return time_step_limit(stiffest, mass);
 }
 
 }  // namespace contact

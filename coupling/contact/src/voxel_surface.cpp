@@ -137,38 +137,26 @@ void find_surface_points(const lbm::VoxelGeometry& geometry, Vec3 centre, double
       }
 }
 
-VoxelSurface::VoxelSurface(const lbm::VoxelGeometry& geometry) : geometry_(&geometry) {
-  const auto& dims = geometry.dims();
-  for (int a = 0; a < 3; ++a) blocks_[a] = (dims[a] + kBlock - 1) / kBlock;
-  block_has_solid_.assign(static_cast<std::size_t>(blocks_[0]) * blocks_[1] * blocks_[2], 0);
-  for (int k = 0; k < dims[2]; ++k)
-    for (int j = 0; j < dims[1]; ++j)
-      for (int i = 0; i < dims[0]; ++i)
-        if (geometry.is_solid(i, j, k))
-          block_has_solid_[(static_cast<std::size_t>(k / kBlock) * blocks_[1] + j / kBlock) *
-                               blocks_[0] + i / kBlock] = 1;
-}
-
 void VoxelSurface::find(Vec3 centre, double reach, std::vector<SurfacePoint>& out) const {
   out.clear();
-  const Query q = make_query(*geometry_, centre, reach);
+  const lbm::VoxelGeometry& geometry = blocks_.geometry();
+  const Query q = make_query(geometry, centre, reach);
   if (q.empty) return;
   // Blocks first, so the voxel loops below see each voxel once, in the same order as
   // find_surface_points within a block (the order of the contacts does not matter).
   for (int bk = q.lo[2] / kBlock; bk <= q.hi[2] / kBlock; ++bk)
     for (int bj = q.lo[1] / kBlock; bj <= q.hi[1] / kBlock; ++bj)
       for (int bi = q.lo[0] / kBlock; bi <= q.hi[0] / kBlock; ++bi) {
-        if (!block_has_solid_[(static_cast<std::size_t>(bk) * blocks_[1] + bj) * blocks_[0] + bi])
-          continue;
+        if (!blocks_.has_solid(bi, bj, bk)) continue;
         const int k_end = std::min(q.hi[2], bk * kBlock + kBlock - 1);
         const int j_end = std::min(q.hi[1], bj * kBlock + kBlock - 1);
         const int i_end = std::min(q.hi[0], bi * kBlock + kBlock - 1);
         for (int k = std::max(q.lo[2], bk * kBlock); k <= k_end; ++k)
           for (int j = std::max(q.lo[1], bj * kBlock); j <= j_end; ++j)
             for (int i = std::max(q.lo[0], bi * kBlock); i <= i_end; ++i) {
-              if (!geometry_->is_solid(i, j, k)) continue;
+              if (!geometry.is_solid(i, j, k)) continue;
               const int cell[3] = {i, j, k};
-              consider_voxel(*geometry_, q, cell, out);
+              consider_voxel(geometry, q, cell, out);
             }
       }
 }

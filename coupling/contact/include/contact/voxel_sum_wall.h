@@ -38,6 +38,8 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "contact/solid_block_map.h"
+#include "contact/stability_limits.h"
 #include "contact/vec3.h"
 #include "contact/wall_contact.h"
 #include "lbm/voxel_geometry.h"
@@ -91,6 +93,10 @@ struct VoxelSumInput {
   Vec3 velocity;  // the wall is at rest
   double dt = 0.0;
   const VoxelSpringStore* springs = nullptr;  // last step's; null = no history
+  // Optional block map of `geometry`: a particle whose voxel box touches no solid block (in
+  // open fluid) returns at once instead of scanning its (2 reach + 1)^3 voxels. The result is
+  // the same with or without it.
+  const SolidBlockMap* blocks = nullptr;
 };
 
 struct VoxelSumResult {
@@ -104,6 +110,17 @@ struct VoxelSumResult {
 
 // The sum of Eq. 6 over the solid voxels within wall_contact_reach of the particle.
 VoxelSumResult voxel_sum_wall_force(const WallContactParams& params, const VoxelSumInput& in);
+
+// Normal stiffness of a particle of this radius resting on a flat voxel floor: the voxel
+// under it (k_w, Eq. 1) and the 8 around it within the adhesion range, each adding k_a R
+// (the slope of F_a = h k_a R, Eq. 4). k_w alone underestimates it: 0.1 + 8 x 0.35 = 29 k_w
+// in the lattice reading of the paper's table, 5 k_w in the d-unit reading (R = 3.5 cells).
+double voxel_sum_resting_stiffness(const WallContactParams& params, double radius);
+
+// The wall's time step limit for the voxel sum: t_c / 10 of the stiffer of that resting
+// stiffness and k_t, on the particle's mass.
+TimeStepLimit voxel_sum_time_step_limit(const WallContactParams& params, double radius,
+                                        double mass);
 
 // Distance from `centre` to the cube of voxel (i,j,k), and the unit normal from the cube's
 // closest point to the centre (from the voxel's centre when the centre is inside the cube).

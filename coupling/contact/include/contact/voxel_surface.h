@@ -19,6 +19,7 @@
 // (lbm::VoxelGeometry); voxels outside the geometry's box count as fluid.
 #include <vector>
 
+#include "contact/solid_block_map.h"
 #include "contact/vec3.h"
 #include "lbm/voxel_geometry.h"
 
@@ -40,22 +41,22 @@ struct SurfacePoint {
 void find_surface_points(const lbm::VoxelGeometry& geometry, Vec3 centre, double reach,
                          std::vector<SurfacePoint>& out);
 
-// The same query, accelerated for repeated calls: a coarse map of which blocks of
-// kBlock^3 voxels hold any solid lets particles in open fluid (most of them) skip the voxel
-// scan, and particles near a wall scan only the blocks that hold solid. Same results as
-// find_surface_points. Keeps a reference to the geometry, which must outlive it.
+// The same query, accelerated for repeated calls: the coarse map of which blocks of voxels
+// hold any solid (solid_block_map.h) lets particles in open fluid (most of them) skip the
+// voxel scan, and particles near a wall scan only the blocks that hold solid. Same results
+// as find_surface_points. Keeps a reference to the geometry, which must outlive it.
 class VoxelSurface {
  public:
-  explicit VoxelSurface(const lbm::VoxelGeometry& geometry);
+  explicit VoxelSurface(const lbm::VoxelGeometry& geometry) : blocks_(geometry) {}
   void find(Vec3 centre, double reach, std::vector<SurfacePoint>& out) const;
-  const lbm::VoxelGeometry& geometry() const { return *geometry_; }
+  const lbm::VoxelGeometry& geometry() const { return blocks_.geometry(); }
+  // The block map, for a wall model that scans the voxels itself (voxel_sum_wall.h).
+  const SolidBlockMap& blocks() const { return blocks_; }
 
-  static constexpr int kBlock = 4;
+  static constexpr int kBlock = SolidBlockMap::kBlock;
 
  private:
-  const lbm::VoxelGeometry* geometry_;
-  int blocks_[3] = {0, 0, 0};
-  std::vector<unsigned char> block_has_solid_;
+  SolidBlockMap blocks_;
 };
 
 }  // namespace contact

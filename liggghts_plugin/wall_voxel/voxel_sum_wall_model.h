@@ -1,0 +1,40 @@
+#pragma once
+// model voxel_sum of fix wall/voxel: the paper's sum over every solid voxel within reach,
+// each a static cube with its own contact, adhesion and tangential spring
+// (contact::voxel_sum_wall_force, Jaeger et al. Eq. 6). Each atom keeps a
+// contact::VoxelSpringStore (64 springs keyed by the voxel's index); migration and restart
+// files carry it packed by contact::pack_spring_store. Particles whose voxel box touches no
+// solid block (open fluid) skip the voxel scan (contact::SolidBlockMap).
+#include <memory>
+#include <vector>
+
+#include "contact/solid_block_map.h"
+#include "contact/voxel_sum_wall.h"
+#include "wall_model.h"
+
+namespace lbm_pore {
+
+class VoxelSumWallModel : public WallModel {
+ public:
+  VoxelSumWallModel(const contact::WallContactParams& params,
+                    std::shared_ptr<const lbm::VoxelGeometry> geometry);
+
+  WallModelKind kind() const override { return WallModelKind::kVoxelSum; }
+  int spring_capacity() const override { return contact::kVoxelSpringCapacity; }
+  WallForce apply(int i, const WallParticle& particle) override;
+  TimeStepFinding time_step(double mass, double radius) const override;
+
+  void grow(int nmax) override { springs_.resize(nmax); }
+  void copy(int from, int to) override { springs_[to] = springs_[from]; }
+  int packed_size() const override { return contact::kPackedSpringStoreSize; }
+  void pack(int i, double* buffer) const override;
+  bool unpack(int i, const double* buffer) override;
+
+ private:
+  contact::WallContactParams params_;
+  std::shared_ptr<const lbm::VoxelGeometry> geometry_;
+  contact::SolidBlockMap blocks_;
+  std::vector<contact::VoxelSpringStore> springs_;  // per atom
+};
+
+}  // namespace lbm_pore
