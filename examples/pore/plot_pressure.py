@@ -5,8 +5,8 @@ erosive bursts: sudden drops of the pressure loss (paper, Figs. 2-3).
 Usage: plot_pressure.py log.liggghts [--fix pore] [--out pressure_loss.png] [--drop 0.1] [--window 10]
 
 The log must contain a thermo block whose header has the columns `Step` and the fix's
-pressure loss, e.g. `thermo_style custom step f_pore[1] f_pore[6] ...` (LIGGGHTS prints the
-header as pore[1], pore[6]). With the deposited volume f_<ID>[6] in the block as well, it is
+pressure loss, e.g. `thermo_style custom step f_pore[16] f_pore[6] ...` (LIGGGHTS prints the
+header as pore[16], pore[6]); P / P_out (f_ID[16]) is used when present, else f_ID[1]. With the deposited volume f_<ID>[6] in the block as well, it is
 drawn on a second axis (the paper relates the pressure peaks to V_dep). A burst is a fall of
 the pressure loss by more than `--drop` (fraction of the preceding peak, default 10 %) within
 `--window` thermo rows (default 10: 1000 fluid steps in the example), followed to its
@@ -87,7 +87,8 @@ def main():
                 return name
         return None
 
-    column = args.column or find(1)
+    # The pressure loss in units of P_out (f_ID[16], the paper's unit) when the log has it.
+    column = args.column or find(16) or find(1)
     if column not in header:
         sys.exit(f"{args.log}: no column {column!r} in thermo header {header}")
     c = header.index(column)
@@ -117,7 +118,8 @@ def main():
         ax2.plot(steps, deposits, lw=1.0, color="tab:green", label="deposited volume")
         ax2.set_ylabel(f"deposited volume V_dep ({deposit_column})", color="tab:green")
     ax.set_xlabel("DEM step")
-    ax.set_ylabel(f"pressure loss ({column})")
+    unit = "P / P_out" if column == find(16) else "pressure units"
+    ax.set_ylabel(f"pressure loss, {unit} ({column})")
     ax.set_title(f"{len(bursts)} erosive burst(s) marked")
     ax.legend()
     fig.tight_layout()

@@ -4,7 +4,7 @@ compares what it measures with a physical expectation or a reference run. Prints
 with its bound (tests/harness/liggghts_run.py); exits 1 when one fails.
 
 usage: coupled_check.py --driver liggghts-lbm --scripts DIR [--mpirun mpirun] CASE
-CASE: adhesion | clog | parallel | outputs | restart | bad_arguments
+CASE: adhesion | clog | clog_pressure | parallel | outputs | restart | bad_arguments
 """
 import math
 import os
@@ -68,6 +68,24 @@ def case_clog(h):
           f"pressure loss {final:.4g} vs particle-free {clean:.4g}: ratio > 2")
     check("clog_deposited_count", last["pore[7]"] > 0, f"{last['pore[7]']:.0f}",
           "> 0 particles deposited (in the pore's cylinder, bonded, slower than 10 % of u)")
+
+
+def case_clog_pressure(h):
+    """The same jam under a constant pressure loss (Delta rho = 0.03): the flux through the
+    outlet falls as the pore clogs, while the speed in the gaps stays bounded, so the run goes
+    on (a velocity drive would force the imposed flux through sub-cell gaps until the fluid
+    guard stops it)."""
+    rows = thermo_rows(h.run("in.clog_pressure", {"steps": 400000, "p_loss": 0.01}).output)
+    clean = at_step(rows, 100000)["pore[3]"]
+    last = rows[-1]
+    check("clog_pressure_ran_to_the_end", last["Step"] == 500000, last["Step"], "== 500000 (no guard stopped it)")
+    check("clog_pressure_flux_falls", last["pore[3]"] / clean < 0.3, f"{last['pore[3]'] / clean:.3g}",
+          f"outlet flux {last['pore[3]']:.4g} vs particle-free {clean:.4g}: ratio < 0.3")
+    check("clog_pressure_deposited", last["pore[7]"] == 4, f"{last['pore[7]']:.0f}", "== 4 deposited")
+    fastest = max(r["pore[9]"] for r in rows)
+    check("clog_pressure_gap_speeds_bounded", fastest < 0.05, f"{fastest:.3g}",
+          "largest fluid speed < 0.05 lattice (the fluid guard stops at 0.5)")
+    check("clog_pressure_pressure_held", abs(last["pore[16]"] - 0.03) < 1e-9, last["pore[16]"], "P / P_out == 0.03")
 
 
 def case_parallel(h):
@@ -225,5 +243,6 @@ def case_bad_arguments(h):
 
 
 if __name__ == "__main__":
-    main({"adhesion": case_adhesion, "clog": case_clog, "parallel": case_parallel, "outputs": case_outputs,
+    main({"adhesion": case_adhesion, "clog": case_clog, "clog_pressure": case_clog_pressure,
+          "parallel": case_parallel, "outputs": case_outputs,
           "restart": case_restart, "bad_arguments": case_bad_arguments}, __doc__)

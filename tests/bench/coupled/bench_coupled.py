@@ -3,7 +3,7 @@
 example's scene, split into fluid, coupling and DEM, against the same lattice without
 particles in the same process.
 
-examples/pore/in.pore runs twice inside one liggghts-lbm process: a particle-free warm-up
+examples/pore/in.pore_small runs twice inside one liggghts-lbm process: a particle-free warm-up
 (fix lbm/pore takes the pure fluid step when no particle exists) and the run with particles.
 At the end of each run fix lbm/pore prints where the time went; this script reads those lines:
   fix lbm/pore: N fluid steps in T s: fluid A s (of which mapping, refill, moving walls and
@@ -13,7 +13,7 @@ Prints BENCH lines (per fluid step, i.e. per N_DEM DEM steps):
   (mapping, refill, moving walls, force, lubrication), coupled_dem_s (DEM and the rest,
   diagnostics), pure_fluid_step_s, particles, coupled_vs_pure_fluid (goal <= 2).
 
-usage: bench_coupled.py --driver liggghts-lbm --script examples/pore/in.pore [--steps N]
+usage: bench_coupled.py --driver liggghts-lbm --script examples/pore/in.pore_small [--steps N]
 """
 import argparse
 import os
