@@ -170,6 +170,7 @@ void FixLbmPore::build_lattice() {
   lubrication_ = std::make_unique<coupling::LubricationKernel>(lbm_pore::lubrication_kernel(options_, *units_));
   monitor_setup_.criteria.speed_threshold = lbm_pore::deposit_speed_threshold(options_, *units_, drive);
   monitor_setup_.bursts = lbm_pore::burst_criteria(options_, *units_);
+  monitor_setup_.burst_min_deposited = options_.burst_deposits;
   const std::string warning = lbm::drive_accuracy_warning(drive);
   if (!warning.empty() && comm->me == 0) error->warning(FLERR, ("fix lbm/pore: pressure_loss: " + warning).c_str());
   monitor_ = std::make_unique<coupling::PoreMonitor>(monitor_setup_, *units_);

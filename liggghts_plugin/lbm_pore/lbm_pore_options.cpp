@@ -153,6 +153,8 @@ PoreOptions parse_pore_options(const std::vector<std::string>& args) {
       if (o.burst_drop >= 1.0) fail("keyword 'burst_drop' = 1: must be a number in (0, 1) (a fall of the whole peak never ends)");
     } else if (key == "burst_window") {
       o.burst_window = words.number(key, 0.0, kInf);
+    } else if (key == "burst_deposits") {
+      o.burst_deposits = words.integer(key, 0, 1000000000);
     } else if (key == "burst_file") {
       o.burst_file = words.text(key);
     } else if (key == "vtk") {
@@ -175,7 +177,7 @@ PoreOptions parse_pore_options(const std::vector<std::string>& args) {
 const char* pore_options_usage() {
   return "dx, rho, nu, n_dem, magic, scene (pore|voxels), origin, lateral, velocity, "
          "pressure_loss, boundary, rotation, lubrication, lubrication_cutoff, deposit_speed, burst_drop, "
-         "burst_window, burst_file, vtk, "
+         "burst_window, burst_deposits, burst_file, vtk, "
          "checkpoint";
 }
 

@@ -40,6 +40,7 @@ struct PoreOptions {
   double burst_drop = 0.1;
   double burst_window = -1.0;
   std::string burst_file;
+  int burst_deposits = 1;  // deposited particles a peak needs for its fall to be erosive
   // Output.
   int vtk_every = 0;
   std::string vtk_directory = "lbm_vtk";

@@ -107,7 +107,9 @@ std::optional<BurstRecord> PoreMonitor::record_fluid_step(const lbm::FluidSolver
   sample.deposited_count = static_cast<long long>(values_[kDepositedCount]);
   auto burst = detector_.add(sample);
   values_[kLargestPressureLoss] = detector_.largest_pressure_loss();
-  values_[kBurstCount] = double(detector_.bursts().size());
+  if (burst && burst->count_before < setup_.burst_min_deposited) burst.reset();
+  if (burst) bursts_.push_back(*burst);
+  values_[kBurstCount] = double(bursts_.size());
   if (burst && burst_file_) burst_file_->write(*burst);
   return burst;
 }
@@ -131,6 +133,13 @@ void PoreMonitor::restore(const std::vector<double>& state) {
   std::copy(state.begin(), state.begin() + kCount, values_.begin());
   last_burst_sample_ = static_cast<long long>(state[kCount]);
   detector_.restore(std::vector<double>(state.begin() + kCount + 1, state.end()));
+  keep_erosive_bursts();
+}
+
+void PoreMonitor::keep_erosive_bursts() {
+  bursts_.clear();
+  for (const BurstRecord& burst : detector_.bursts())
+    if (burst.count_before >= setup_.burst_min_deposited) bursts_.push_back(burst);
 }
 
 }  // namespace coupling

@@ -26,6 +26,9 @@ struct PoreMonitorSetup {
   int flow_length = 0;          // nodes along the flow axis (the counters' wrap-around test)
   DepositionCriteria criteria;  // speed threshold of a deposit (lattice units)
   BurstCriteria bursts;         // what counts as an erosive burst (window in fluid steps)
+  // An erosive burst tears a deposit off: a fall whose peak had fewer deposited particles
+  // than this (the start-up transient of a flow, particles passing) is not recorded.
+  long long burst_min_deposited = 1;
 };
 
 // The paper's scene: "located inside the pore radius" (Sec. III) is the pore's cylinder,
@@ -83,7 +86,7 @@ class PoreMonitor {
   // step already recorded (the setup of a later run) only refreshes P / P_out.
   std::optional<BurstRecord> record_fluid_step(const lbm::FluidSolver& solver, long long fluid_step,
                                                long long step, double time);
-  const std::vector<BurstRecord>& bursts() const { return detector_.bursts(); }
+  const std::vector<BurstRecord>& bursts() const { return bursts_; }
   // Rank 0 of a host: append each burst to `path` (header with these unit names). Throws
   // std::runtime_error naming the file when it cannot be opened.
   void write_bursts_to(const std::string& path, const BurstUnits& units);
@@ -103,6 +106,8 @@ class PoreMonitor {
   std::vector<double> values_;
   bool fluid_stale_ = true;
   BurstDetector detector_;
+  std::vector<BurstRecord> bursts_;  // the detector's falls that eroded a deposit
+  void keep_erosive_bursts();
   long long last_burst_sample_ = -1;  // the fluid step last fed to the detector
   std::unique_ptr<BurstFileWriter> burst_file_;
 };
