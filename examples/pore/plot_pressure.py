@@ -37,6 +37,25 @@ def read_thermo(path):
     return header, rows
 
 
+def read_thermo_blocks(path):
+    """Every thermo block of the log as (header, rows), in order (one per run command)."""
+    blocks, header = [], None
+    with open(path) as log:
+        for line in log:
+            words = line.split()
+            if words and words[0] == "Step":
+                header = words
+                blocks.append((header, []))
+                continue
+            if header is None or len(words) != len(header):
+                continue
+            try:
+                blocks[-1][1].append([float(w) for w in words])
+            except ValueError:
+                header = None
+    return [(h, rows) for h, rows in blocks if rows]
+
+
 def find_bursts(steps, pressure, drop, window):
     """(peak, minimum) index pairs of the erosive bursts, by the rules of fix lbm/pore's online
     detector (coupling/diagnostics/burst_detector.h) with thermo rows as samples: a peak is a
