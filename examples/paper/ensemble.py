@@ -118,7 +118,7 @@ def _study_command(driver, launch_dir, nruns, partitions, ranks_per_run, mpirun)
     if partitions > 1:
         cmd += ["-partition", f"{partitions}x{ranks_per_run}"]
     cmd += ["-in", STUDY_SCRIPT, "-var", "launch", launch_dir, "-var", "nruns", str(nruns),
-            "-var", "partitions", str(partitions), "-log", os.path.join(launch_dir, "log.study")]
+            "-log", os.path.join(launch_dir, "log.study")]
     if partitions * ranks_per_run > 1 or mpirun:
         cmd = _mpirun(mpirun or "mpirun", partitions * ranks_per_run) + cmd
     return cmd
