@@ -22,6 +22,15 @@ def burst_groups(summary, x_of, y_of):
     return groups
 
 
+def burst_fit(summary, x_key, statistic):
+    """(groups, fit, pearson) of P_peak against a burst column (V_dep or L_dep) over the
+    finished runs: `statistic` (fit_stats.slope or slope_through_origin) and the Pearson
+    coefficient, each (value, low, high) from fit_stats.bootstrap."""
+    from fit_stats import bootstrap, pearson
+    groups = burst_groups(summary, lambda run, b: b[x_key], lambda run, b: b["P_peak"])
+    return groups, bootstrap(groups, statistic), bootstrap(groups, pearson)
+
+
 def result(summary, figure, quantity, paper, ours, out_png, **more):
     r = dict(figure=figure, quantity=quantity, paper=paper, ours=ours, plot=out_png,
              runs=len(summary["runs"]), finished=summary["finished"], size=summary["size"])

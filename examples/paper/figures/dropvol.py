@@ -3,16 +3,14 @@ volume V_dep [d^3] at that peak, over the seeds; a linear fit's slope and the Pe
 coefficient (paper: 1.15(1) and 0.71(1), 100 seeds)."""
 import numpy as np
 
-from fit_stats import bootstrap, fmt, pearson, slope
-from figures.common import burst_groups, plt, result, save
+from fit_stats import fmt, slope
+from figures.common import burst_fit, plt, result, save
 
 PAPER_SLOPE, PAPER_PEARSON = 1.15, 0.71
 
 
 def analyze(summary, out_dir):
-    groups = burst_groups(summary, lambda run, b: b["V_dep"], lambda run, b: b["P_peak"])
-    fit = bootstrap(groups, slope)
-    r = bootstrap(groups, pearson)
+    groups, fit, r = burst_fit(summary, "V_dep", slope)
     fig, ax = plt.subplots(figsize=(6, 4.5))
     for x, y in groups:
         ax.plot(x, y, "o", ms=4, alpha=0.7)

@@ -3,16 +3,14 @@ the twelve pore lengths of the appendix; the coefficient of P = c L_dep (a line 
 the paper's P_crit = sigma_c L_dep) and the Pearson coefficient (paper: 0.27(1), 0.91(1))."""
 import numpy as np
 
-from fit_stats import bootstrap, fmt, pearson, slope_through_origin
-from figures.common import burst_groups, plt, result, save
+from fit_stats import fmt, slope_through_origin
+from figures.common import burst_fit, plt, result, save
 
 PAPER_COEFFICIENT, PAPER_PEARSON = 0.27, 0.91
 
 
 def analyze(summary, out_dir):
-    groups = burst_groups(summary, lambda run, b: b["L_dep"], lambda run, b: b["P_peak"])
-    c = bootstrap(groups, slope_through_origin)
-    r = bootstrap(groups, pearson)
+    groups, c, r = burst_fit(summary, "L_dep", slope_through_origin)
     fig, ax = plt.subplots(figsize=(6, 4.5))
     runs = [run for run in summary["runs"] if run["state"] == "done"]
     for run, (x, y) in zip(runs, groups):
