@@ -1,0 +1,202 @@
+"""Runs an ensemble of in.pore runs through examples/paper/in.study, each in its own folder
+(<study>/runs/<name>/: log.liggghts, bursts.txt, VTK files, stdout.txt), and reads back which
+finished, which failed and why.
+
+Two ways to launch, both through LIGGGHTS's multi-partition script in.study:
+
+  partitions  `mpirun -np P*K liggghts-lbm -partition PxK -in in.study`, one run per
+              partition (its index from a uloop variable), batch after batch (in.study says
+              why not a queue per partition). LIGGGHTS 3.8 stops the whole universe when any
+              partition hits an ERROR (Error::all calls MPI_Abort on MPI_COMM_WORLD with more
+              than one partition; verified here), so the runs that were under way die with it.
+              A run that failed is recorded with its ERROR line and not retried; the runs the
+              abort cut short are launched again, until none is left. What that costs: each
+              abort restarts the runs it cut short from their beginning. The right mode for a
+              cluster allocation (one mpirun, Slurm sees one job step) when failures are rare.
+  pool        one mpirun per run (the same in.study, one partition), P of them at a time:
+              a failing run stops only itself. The right mode on a laptop, and wherever runs
+              are long and failures not rare.
+
+A run's state comes from its own log: `STUDY_RUN_DONE` (printed by in.study after the scene
+returned) means finished; an `ERROR` line means failed, with that line as the reason; neither
+means cut short (killed, timed out, or taken down by another partition's abort).
+"""
+import concurrent.futures
+import json
+import os
+import re
+import shutil
+import signal
+import subprocess
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+STUDY_SCRIPT = os.path.join(HERE, "in.study")
+SCENE_SCRIPT = os.path.join(os.path.dirname(HERE), "pore", "in.pore")
+DONE_MARK = "STUDY_RUN_DONE"
+
+
+def _liggghts_string(value):
+    text = str(value)
+    if '"' in text:
+        raise ValueError(f"knob value {text!r} may not contain a double quote")
+    return f'"{text}"'
+
+
+def scene_knobs(scene):
+    """The knobs of a scene script: its `variable <name> index <default>` lines."""
+    with open(scene) as f:
+        return [m.group(1) for m in (re.match(r"variable\s+(\w+)\s+index\s", line) for line in f)
+                if m]
+
+
+def write_run_file(launch_dir, index, run_dir, knobs, scene=SCENE_SCRIPT):
+    """<launch_dir>/<index>.in: the run's folder, its scene and its knobs for in.study.
+    It first deletes every knob of the scene: `clear` keeps variables, so a partition's
+    earlier run would otherwise leave its values (or the scene's index defaults, which a
+    string of the same name may not redefine) to the next run."""
+    lines = [f"variable {name} delete" for name in scene_knobs(scene)]
+    lines += [f"variable run_dir string {_liggghts_string(run_dir)}",
+              f"variable scene string {_liggghts_string(scene)}"]
+    lines += [f"variable {k} string {_liggghts_string(v)}" for k, v in sorted(knobs.items())]
+    with open(os.path.join(launch_dir, f"{index}.in"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
+def run_state(run_dir):
+    """(state, reason) of a run from its log: ('done', ''), ('failed', ERROR line) or
+    ('incomplete', why)."""
+    log = os.path.join(run_dir, "log.liggghts")
+    if not os.path.exists(log):
+        return "incomplete", "never started (no log.liggghts)"
+    with open(log, errors="replace") as f:
+        text = f.read()
+    error = next((line.strip() for line in text.splitlines() if line.startswith("ERROR")), "")
+    # an error on a rank other than the first reaches only the screen, i.e. stdout.txt
+    stdout = os.path.join(run_dir, "stdout.txt")
+    if not error and os.path.exists(stdout):
+        with open(stdout, errors="replace") as f:
+            error = next((line.strip() for line in f if line.startswith("ERROR")), "")
+    if error:
+        return "failed", error
+    if any(line.startswith(DONE_MARK) for line in text.splitlines()):
+        return "done", ""
+    return "incomplete", "stopped before the end (killed, timed out or another partition's abort)"
+
+
+def _clean(run_dir):
+    """A run starts from an empty folder: fix lbm/pore appends to bursts.txt."""
+    if os.path.isdir(run_dir):
+        shutil.rmtree(run_dir)
+    os.makedirs(run_dir)
+
+
+def _mpirun(mpirun, ranks):
+    return [mpirun, "--allow-run-as-root", "--oversubscribe", "-np", str(ranks)]
+
+
+def _execute(cmd, cwd, stdout_path, timeout):
+    """Runs cmd in its own process group (so a timeout kills mpirun and its ranks, which
+    `timeout mpirun ...` leaves running) and returns its exit code (None: timed out)."""
+    with open(stdout_path, "w") as out:
+        proc = subprocess.Popen(cmd, cwd=cwd, stdout=out, stderr=subprocess.STDOUT,
+                                start_new_session=True)
+        try:
+            return proc.wait(timeout=timeout)
+        except subprocess.TimeoutExpired:
+            os.killpg(proc.pid, signal.SIGTERM)
+            try:
+                proc.wait(timeout=10)
+            except subprocess.TimeoutExpired:
+                os.killpg(proc.pid, signal.SIGKILL)
+                proc.wait()
+            return None
+
+
+def _study_command(driver, launch_dir, nruns, partitions, ranks_per_run, mpirun):
+    cmd = [driver]
+    if partitions > 1:
+        cmd += ["-partition", f"{partitions}x{ranks_per_run}"]
+    cmd += ["-in", STUDY_SCRIPT, "-var", "launch", launch_dir, "-var", "nruns", str(nruns),
+            "-log", os.path.join(launch_dir, "log.study")]
+    if partitions * ranks_per_run > 1 or mpirun:
+        cmd = _mpirun(mpirun or "mpirun", partitions * ranks_per_run) + cmd
+    return cmd
+
+
+def launch_partitions(driver, study_dir, runs, partitions, ranks_per_run, mpirun, timeout):
+    """Runs `runs` (list of (name, knobs)) in multi-partition launches of up to `partitions`
+    runs each until every run is done or failed (or a launch times out or settles nothing);
+    returns the list of launches made."""
+    launches, pending = [], [name for name, _ in runs]
+    knobs_of = dict(runs)
+    while pending:
+        batch = pending[:partitions]
+        launch_dir = os.path.join(study_dir, "launches", str(len(launches) + 1))
+        os.makedirs(launch_dir, exist_ok=True)
+        for i, name in enumerate(batch, start=1):
+            run_dir = os.path.join(study_dir, "runs", name)
+            _clean(run_dir)
+            write_run_file(launch_dir, i, run_dir, knobs_of[name])
+        cmd = _study_command(driver, launch_dir, len(batch), len(batch), ranks_per_run, mpirun)
+        start = time.time()
+        code = _execute(cmd, launch_dir, os.path.join(launch_dir, "stdout.txt"), timeout)
+        launches.append(dict(command=cmd, runs=batch, exit_code=code,
+                             seconds=round(time.time() - start, 1),
+                             cores=len(batch) * ranks_per_run))
+        cut_short = [name for name in batch
+                     if run_state(os.path.join(study_dir, "runs", name))[0] == "incomplete"]
+        if code is None or cut_short == batch:
+            break  # timed out, or nothing in the batch settled: stop rather than loop
+        pending = cut_short + pending[len(batch):]
+    return launches
+
+
+def launch_pool(driver, study_dir, runs, parallel, ranks_per_run, mpirun, timeout):
+    """Runs each run in its own mpirun, `parallel` at a time; returns the launches made."""
+    def one(item):
+        name, knobs = item
+        run_dir = os.path.join(study_dir, "runs", name)
+        _clean(run_dir)
+        launch_dir = os.path.join(run_dir, "launch")
+        os.makedirs(launch_dir)
+        write_run_file(launch_dir, 1, run_dir, knobs)
+        cmd = _study_command(driver, launch_dir, 1, 1, ranks_per_run, mpirun)
+        start = time.time()
+        code = _execute(cmd, launch_dir, os.path.join(run_dir, "stdout.txt"), timeout)
+        return dict(command=cmd, runs=[name], exit_code=code,
+                    seconds=round(time.time() - start, 1), cores=ranks_per_run)
+
+    with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, parallel)) as pool:
+        return list(pool.map(one, runs))
+
+
+def write_summary(study_dir, study, size, runs, launches, mode):
+    """summary.json and summary.txt: every run with its state, the reason of a failure, its
+    largest P / P_out and burst count from its own log, and the wall time of the launches."""
+    from study_io import run_figures  # local import: study_io needs examples/pore on the path
+    entries = []
+    for name, knobs in runs:
+        run_dir = os.path.join(study_dir, "runs", name)
+        state, reason = run_state(run_dir)
+        entry = dict(name=name, state=state, reason=reason, folder=run_dir, knobs=knobs)
+        entry.update(run_figures(run_dir, int(knobs.get("warmup", 0))))
+        entries.append(entry)
+    summary = dict(study=study, size=size, mode=mode, runs=entries, launches=launches,
+                   core_hours=sum(l["seconds"] * l["cores"] for l in launches) / 3600.0,
+                   finished=sum(e["state"] == "done" for e in entries),
+                   failed=sum(e["state"] == "failed" for e in entries),
+                   incomplete=sum(e["state"] == "incomplete" for e in entries))
+    with open(os.path.join(study_dir, "summary.json"), "w") as f:
+        json.dump(summary, f, indent=1)
+    lines = [f"study {study} ({size}, {mode}): {summary['finished']} finished, "
+             f"{summary['failed']} failed, {summary['incomplete']} incomplete of {len(entries)}"]
+    for e in entries:
+        figures = (f"max P/P_out {e['max_P']:.4g}, bursts {e['bursts']}"
+                   if e.get("max_P") is not None else "no thermo rows")
+        lines.append(f"  {e['name']:<28} {e['state']:<10} {figures}"
+                     + (f"  -- {e['reason']}" if e["reason"] else ""))
+    with open(os.path.join(study_dir, "summary.txt"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print("\n".join(lines), flush=True)
+    return summary

@@ -1,0 +1,44 @@
+"""Fig. pvpflux: particle and fluid volume flux through the outlet, each over their sum,
+against an imposed constant pressure loss P [P_out] (ka = 0.05); the paper finds no particle
+flux below P ~ 0.35. Fluxes over the second half of each run: the fluid's mean f_pore[3],
+the particles' growth rate of f_pore[13] (cumulative particle volume through the outlet)."""
+import numpy as np
+
+from figures.common import N_DEM, finished_runs, plt, result, save, thermo
+
+PAPER_THRESHOLD = 0.35
+
+
+def _fluxes(run):
+    columns = thermo(run["folder"])
+    if "pore[3]" not in columns or len(columns["Step"]) < 4:
+        return np.nan, np.nan
+    t = np.asarray(columns["Step"], float) / N_DEM
+    half = t >= t[0] + (t[-1] - t[0]) / 2
+    fluid = float(np.mean(np.asarray(columns["pore[3]"])[half]))
+    volume = np.asarray(columns["pore[13]"], float)[half]
+    particles = float((volume[-1] - volume[0]) / (t[half][-1] - t[half][0]))
+    return fluid, max(particles, 0.0)
+
+
+def analyze(summary, out_dir):
+    runs = sorted(finished_runs(summary), key=lambda r: float(r["knobs"]["P_imposed"]))
+    P = [float(r["knobs"]["P_imposed"]) for r in runs]
+    flux = [_fluxes(r) for r in runs]
+    total = [f + p for f, p in flux]
+    phi_f = [f / s if s > 0 else np.nan for (f, _), s in zip(flux, total)]
+    phi_p = [p / s if s > 0 else np.nan for (_, p), s in zip(flux, total)]
+    threshold = next((p for p, q in zip(P, phi_p) if q > 0), None)
+    fig, ax = plt.subplots(figsize=(6, 4.5))
+    ax.plot(P, phi_p, "o-", label="particles / total")
+    ax.plot(P, phi_f, "s-", label="fluid / total")
+    ax.set_yscale("log")
+    ax.axvline(PAPER_THRESHOLD, color="k", ls=":", label=f"paper: particle flux from P ~ {PAPER_THRESHOLD}")
+    ax.set_xlabel("imposed P [P_out]")
+    ax.set_ylabel("flux / total flux")
+    ax.legend(fontsize=8)
+    ours = (f"first P with particle flux: {threshold}" if threshold is not None
+            else "no particle flux at any P")
+    return result(summary, "pvpflux", "P below which no particle leaves", f"~ {PAPER_THRESHOLD}",
+                  ours, save(fig, out_dir, "pvpflux"), threshold=threshold,
+                  points=[dict(P=a, fluid=b, particles=c) for a, b, c in zip(P, phi_f, phi_p)])

@@ -1,0 +1,97 @@
+#!/usr/bin/python3
+"""Runs one study of the paper (a figure) as an ensemble and analyses it.
+
+  run_study.py <study> [--size tiny|quick|paper] [--out DIR] [--parallel P] [--ranks-per-run K]
+               [--mode pool|partitions] [--driver liggghts-lbm] [--mpirun mpirun]
+               [--timeout S] [--add-run NAME:knob=value,...] [--dry-run] [--no-analysis]
+
+Studies: singlejump collection dropvol porelength porediameter phaseac phasead conc pvpflux
+(studies.py lists their runs). Before it starts it prints the runs, the command and the
+estimated cost of this size and of the paper size in core-hours (from a cost per lattice cell
+and fluid step measured here, studies.CORE_SECONDS_PER_CELL_STEP). Every run writes into
+<out>/runs/<name>/ (log.liggghts, bursts.txt, VTK, stdout.txt); <out>/summary.txt and
+summary.json say which runs finished, which failed and why (the ERROR line of their log);
+then analyze.py fits and plots (<out>/results.json, <out>/<study>.png).
+
+--mode pool (default): one mpirun per run, P at a time: a failing run stops only itself.
+--mode partitions: one `mpirun -np P*K liggghts-lbm -partition PxK -in in.study`; LIGGGHTS
+  aborts every partition when one fails, and the runs cut short are relaunched (ensemble.py).
+--add-run adds a run with the study's knobs changed (e.g. a deliberately failing one).
+"""
+import argparse
+import os
+import shlex
+import shutil
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import ensemble  # noqa: E402
+import studies  # noqa: E402
+
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+DEFAULT_DRIVER = os.path.join(REPO, "build", "liggghts_plugin", "liggghts-lbm")
+
+
+def parse_added_run(text, base):
+    name, _, assignments = text.partition(":")
+    knobs = dict(base)
+    for item in filter(None, assignments.split(",")):
+        key, _, value = item.partition("=")
+        knobs[key.strip()] = value.strip()
+    return name, knobs
+
+
+def main():
+    parser = argparse.ArgumentParser(description="Run one study of the paper as an ensemble.")
+    parser.add_argument("study", choices=sorted(studies.STUDIES))
+    parser.add_argument("--size", default="quick", choices=sorted(studies.SIZES))
+    parser.add_argument("--out", help="study folder (default ./<study>_<size>)")
+    parser.add_argument("--parallel", type=int, default=2, help="runs at a time (partitions)")
+    parser.add_argument("--ranks-per-run", type=int, default=1)
+    parser.add_argument("--mode", default="pool", choices=["pool", "partitions"])
+    parser.add_argument("--driver", default=DEFAULT_DRIVER)
+    parser.add_argument("--mpirun", default=None,
+                        help="mpirun to launch with (default: mpirun when a launch needs > 1 rank)")
+    parser.add_argument("--timeout", type=float, default=None, help="seconds per launch")
+    parser.add_argument("--add-run", action="append", default=[], metavar="NAME:knob=value,...")
+    parser.add_argument("--dry-run", action="store_true", help="print the plan and the cost only")
+    parser.add_argument("--no-analysis", action="store_true")
+    args = parser.parse_args()
+
+    runs = studies.runs_of(args.study, args.size)
+    runs += [parse_added_run(text, runs[0][1]) for text in args.add_run]
+    out = os.path.abspath(args.out or f"{args.study}_{args.size}")
+    paper_cost = studies.core_hours(studies.runs_of(args.study, "paper"))
+    cost = studies.core_hours(runs)
+    cores = args.parallel * args.ranks_per_run
+    print(f"study {args.study}, size {args.size}: {len(runs)} runs into {out}")
+    print(f"estimated cost: {cost:.3g} core-hours ({cost / cores:.3g} h on {cores} cores); "
+          f"the paper size: {paper_cost:.3g} core-hours "
+          f"({len(studies.runs_of(args.study, 'paper'))} runs of 10^6 fluid steps)", flush=True)
+    for name, knobs in runs:
+        print(f"  {name}: " + " ".join(f"-var {k} {shlex.quote(str(v))}"
+                                       for k, v in sorted(knobs.items())))
+    if args.dry_run:
+        return 0
+    if not os.path.exists(args.driver):
+        sys.exit(f"no liggghts-lbm at {args.driver} (build first, or pass --driver)")
+    if os.path.isdir(os.path.join(out, "runs")):
+        shutil.rmtree(os.path.join(out, "runs"))
+    if os.path.isdir(os.path.join(out, "launches")):
+        shutil.rmtree(os.path.join(out, "launches"))
+    os.makedirs(out, exist_ok=True)
+    launch = ensemble.launch_pool if args.mode == "pool" else ensemble.launch_partitions
+    launches = launch(args.driver, out, runs, args.parallel, args.ranks_per_run, args.mpirun,
+                      args.timeout)
+    for entry in launches:
+        print(f"launch ({entry['seconds']} s, exit {entry['exit_code']}): "
+              + " ".join(shlex.quote(c) for c in entry["command"]))
+    summary = ensemble.write_summary(out, args.study, args.size, runs, launches, args.mode)
+    if not args.no_analysis and summary["finished"]:
+        import analyze
+        analyze.analyze(out)
+    return 0 if summary["finished"] else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())

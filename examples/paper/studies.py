@@ -1,0 +1,186 @@
+"""The paper's studies as lists of runs: one entry per figure of Jaeger, Mendoza & Herrmann,
+each a set of runs of examples/pore/in.pore (the paper's scene and table, lengths in particle
+diameters d) that differ in a seed or a swept knob, in three sizes:
+
+  tiny   seconds per run: the CTest of the machinery (nothing physical to read from it)
+  quick  2 cores, at most ~30 minutes per study: 5 cells per d instead of 7.1 (drag on a
+         resolved sphere about 6 % low, doc/accuracy.md table 2, against 2.6 % at 8 cells),
+         fewer seeds and points, 2-4 % of the paper's run length
+  paper  the paper's counts and 10^6 fluid steps (10^8 DEM steps) per run at 7.1 cells per d
+
+A run is (name, knobs): the knobs are in.pore's -var names with their values. Lengths go
+through `scene`, which rounds them to whole cells of 1 / cells_per_d, as fix lbm/pore needs.
+"""
+import math
+
+# The paper's scene (Fig. 1, appendix): D = 3.52, L = 4.23; the inlet, free and outlet regions
+# and the width are this project's (in.pore's header): W / D keeps inlet area / pore area 3.3.
+PAPER = dict(D=3.52, Lp=4.23, Li=2.82, Lf=2.82, Lo=2.82, W_over_D=5.63 / 3.52)
+
+# The paper's lists (appendix; Results)
+PORE_LENGTHS = [0.14, 0.70, 1.41, 2.11, 2.82, 3.52, 4.23, 4.93, 5.63, 6.34, 7.04, 7.75]
+PORE_DIAMETERS = [1.76, 2.11, 2.82, 3.52, 4.23, 5.28, 6.34, 7.04]
+
+SIZES = {
+    # cells per d, DEM steps with particles, warm-up DEM steps, thermo and VTK intervals
+    # tiny: the burst detector flags falls of 0.3 % within 20 fluid steps, so that seconds-long
+    # runs have burst rows for the analyses to read (not erosive bursts: flow wiggles)
+    "tiny": dict(cells_per_d=4, steps=30000, warmup=2000, thermo_every=500, vtk_every=100,
+                 burst_drop=0.003, burst_window=20),
+    "quick": dict(cells_per_d=5, steps=2000000, warmup=50000, thermo_every=2000, vtk_every=0),
+    "paper": dict(cells_per_d=7.1, steps=100000000, warmup=50000, thermo_every=10000,
+                  vtk_every=0),
+}
+
+# Measured here (2-core VM shared with other jobs), one core, 100 DEM substeps included: the
+# quick collection run, 63 x 28 x 28 cells with 30-60 particles, took 0.0192 s per fluid step
+# (383 s for 20 000), i.e. 3.9e-7 core-seconds per lattice cell and fluid step (a tiny run with
+# ~20 particles: 2.0e-7); the paper's scene (90 x 40 x 40) then costs 0.056 s per fluid step.
+CORE_SECONDS_PER_CELL_STEP = 3.9e-7
+N_DEM = 100
+
+
+def cells(length, cells_per_d):
+    return max(1, int(round(length * cells_per_d)))
+
+
+def scene(cells_per_d, D=PAPER["D"], Lp=PAPER["Lp"], W=None):
+    """in.pore's length knobs for a pore of diameter D and length Lp, every length a whole
+    number of cells; W scales with D (inlet area / pore area as in the default scene)."""
+    W = PAPER["W_over_D"] * D if W is None else W
+    lengths = dict(D=D, Lp=Lp, W=W, Li=PAPER["Li"], Lf=PAPER["Lf"], Lo=PAPER["Lo"])
+    return {k: f"{cells(v, cells_per_d) / cells_per_d:.10g}" for k, v in lengths.items()}
+
+
+def lattice_cells(knobs):
+    c = float(knobs["cells_per_d"])
+    x = sum(cells(float(knobs[k]), c) for k in ("Li", "Lf", "Lp", "Lo"))
+    return x * cells(float(knobs["W"]), c) ** 2
+
+
+def core_hours(runs, ranks_per_run=1):
+    """Estimated cost of the runs in core-hours, from CORE_SECONDS_PER_CELL_STEP (a run on
+    more ranks costs about the same core-hours, a little more for the halo exchange)."""
+    total = 0.0
+    for _, knobs in runs:
+        fluid_steps = (int(knobs["steps"]) + int(knobs["warmup"])) / N_DEM
+        total += fluid_steps * lattice_cells(knobs) * CORE_SECONDS_PER_CELL_STEP
+    return total / 3600.0
+
+
+def _is_prime(n):
+    return n > 1 and all(n % f for f in range(2, int(math.isqrt(n)) + 1))
+
+
+def _seeds(n, first=100003):
+    """n insertion seeds: the first prime at or above first + 1000 k (LIGGGHTS's insertion
+    fixes want primes above 10000)."""
+    seeds = []
+    for k in range(n):
+        s = first + 1000 * k
+        while not _is_prime(s):
+            s += 1
+        seeds.append(s)
+    return seeds
+
+
+def _base(size, **extra):
+    knobs = dict(SIZES[size])
+    knobs.update(scene(knobs["cells_per_d"]))
+    knobs.update(extra)
+    return knobs
+
+
+def _counts(size, tiny, quick, paper):
+    return {"tiny": tiny, "quick": quick, "paper": paper}[size]
+
+
+def singlejump(size):
+    return [("seed_100003", _base(size, seed=100003))]
+
+
+def collection(size):
+    # the run of singlejump with fluid and particle VTK files (about 60 of each per run)
+    every = {"tiny": 100, "quick": 400, "paper": 20000}[size]
+    return [("snapshot", _base(size, seed=100003, vtk_every=every))]
+
+
+def dropvol(size):
+    return [(f"seed_{s}", _base(size, seed=s)) for s in _seeds(_counts(size, 2, 6, 100))]
+
+
+def porelength(size):
+    lengths = _counts(size, PORE_LENGTHS[5:7], PORE_LENGTHS[1::2], PORE_LENGTHS)
+    runs = []
+    for L in lengths:
+        knobs = _base(size, seed=100003)
+        knobs.update(scene(knobs["cells_per_d"], Lp=L))
+        runs.append((f"L_{L:.2f}", knobs))
+    return runs
+
+
+def porediameter(size):
+    diameters = _counts(size, PORE_DIAMETERS[3:5], PORE_DIAMETERS[1::2], PORE_DIAMETERS)
+    seeds = _seeds(_counts(size, 1, 1, 10))
+    runs = []
+    for D in diameters:
+        for s in seeds:
+            # the appendix's L = 4.22 d; f_walls[2] (the wall's hold on the particles) gives f_a
+            knobs = _base(size, seed=s, thermo_extra="f_walls[2]")
+            knobs.update(scene(knobs["cells_per_d"], D=D, Lp=4.22))
+            runs.append((f"D_{D:.2f}_seed_{s}", knobs))
+    return runs
+
+
+def phaseac(size):
+    ka = _counts(size, [0.05, 0.1], [0.03, 0.1, 0.3], [0.02, 0.04, 0.06, 0.1, 0.15, 0.2, 0.3])
+    kc = _counts(size, [0.1], [0.01, 1.0], [0.001, 0.01, 0.1, 1.0, 10.0])
+    runs = []
+    for a in ka:
+        for c in kc:
+            knobs = _base(size, seed=100003, ka=a, kc=c)
+            knobs.update(scene(knobs["cells_per_d"], Lp=6.45))
+            runs.append((f"ka_{a:g}_kc_{c:g}", knobs))
+    return runs
+
+
+def phasead(size):
+    # d = 1 stays the unit of the table; d / D changes through D, with L = 1.2 D
+    ka = _counts(size, [0.1], [0.03, 0.1, 0.3], [0.02, 0.04, 0.06, 0.1, 0.15, 0.2, 0.3])
+    d_over_D = _counts(size, [0.25, 0.3], [0.2, 0.36], [0.15, 0.2, 0.25, 0.3, 0.35, 0.4])
+    runs = []
+    for a in ka:
+        for r in d_over_D:
+            knobs = _base(size, seed=100003, ka=a)
+            knobs.update(scene(knobs["cells_per_d"], D=1 / r, Lp=1.2 / r))
+            runs.append((f"ka_{a:g}_d_over_D_{r:g}", knobs))
+    return runs
+
+
+def conc(size):
+    values = _counts(size, [0.02, 0.05], [0.0, 0.01, 0.02, 0.05, 0.1],
+                     [0.0, 0.005, 0.01, 0.013, 0.02, 0.03, 0.04, 0.05, 0.07, 0.1])
+    return [(f"c_in_{c:g}", _base(size, seed=100003, c_in=c)) for c in values]
+
+
+def pvpflux(size):
+    pressures = _counts(size, [0.1, 0.4], [0.1, 0.2, 0.3, 0.4, 0.5],
+                        [0.05, 0.1, 0.15, 0.2, 0.25, 0.3, 0.35, 0.4, 0.45, 0.5, 0.6])
+    return [(f"P_{p:g}", _base(size, seed=100003, ka=0.05, P_imposed=p,
+                               thermo_extra="f_pore[3] f_pore[13]")) for p in pressures]
+
+
+STUDIES = {f.__name__: f for f in (singlejump, collection, dropvol, porelength, porediameter,
+                                   phaseac, phasead, conc, pvpflux)}
+
+
+def runs_of(study, size):
+    if study not in STUDIES:
+        raise KeyError(f"unknown study {study!r}; known: {', '.join(STUDIES)}")
+    if size not in SIZES:
+        raise KeyError(f"unknown size {size!r}; known: {', '.join(SIZES)}")
+    return STUDIES[study](size)
+
+
+def pore_area(knobs):
+    return math.pi * float(knobs["D"]) ** 2 / 4

@@ -1,0 +1,70 @@
+"""Reads what the runs of a study wrote: each run's thermo rows (log.liggghts, by column name),
+its erosive bursts (bursts.txt, fix lbm/pore's burst_file) and the study's summary.json.
+
+Thermo columns are named as LIGGGHTS prints them: pore[16] is f_pore[16] (P / P_out),
+pore[17] the largest P / P_out so far, pore[18] the burst count, pore[6] V_dep, pore[8] L_dep.
+"""
+import json
+import os
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "pore"))
+from plot_pressure import read_thermo  # noqa: E402  (the main example's log reader)
+
+BURST_COLUMNS = ("step", "time", "P_peak", "P_after", "delta_P", "delta_t", "V_dep", "L_dep",
+                 "count_before", "count_after")
+
+
+def thermo(run_dir):
+    """{column: [values]} of all thermo rows of the run, or {} when it has none."""
+    log = os.path.join(run_dir, "log.liggghts")
+    if not os.path.exists(log):
+        return {}
+    try:
+        header, rows = read_thermo(log)
+    except SystemExit:  # read_thermo exits on a log without thermo rows
+        return {}
+    return {name: [row[j] for row in rows] for j, name in enumerate(header)}
+
+
+def bursts(run_dir):
+    """The run's erosive bursts, one dict per row of bursts.txt (pressures in P_out)."""
+    path = os.path.join(run_dir, "bursts.txt")
+    rows = []
+    if os.path.exists(path):
+        with open(path) as f:
+            for line in f:
+                if line.strip() and not line.startswith("#"):
+                    rows.append(dict(zip(BURST_COLUMNS, map(float, line.split()))))
+    return rows
+
+
+def largest_pressure(columns, warmup):
+    """The largest P / P_out once particles are in (DEM step > warmup). f_pore[17], the
+    largest so far sampled every fluid step, is exact when it grew after the warm-up; when it
+    did not (the start-up transient of the flow was higher), the largest thermo row of
+    f_pore[16] after the warm-up stands in."""
+    steps, so_far, now = columns["Step"], columns["pore[17]"], columns["pore[16]"]
+    at_warmup = max([m for s, m in zip(steps, so_far) if s <= warmup] or [0.0])
+    if so_far[-1] > at_warmup:
+        return so_far[-1]
+    return max([p for s, p in zip(steps, now) if s > warmup] or [now[-1]])
+
+
+def run_figures(run_dir, warmup=0):
+    """The figures the summary lists per run, read from the run's own files: the largest
+    P / P_out after the warm-up (largest_pressure) and the number of bursts."""
+    columns = thermo(run_dir)
+    if "pore[17]" not in columns:
+        return dict(max_P=None, bursts=len(bursts(run_dir)), last_step=None)
+    return dict(max_P=largest_pressure(columns, warmup), bursts=len(bursts(run_dir)),
+                last_step=int(columns["Step"][-1]))
+
+
+def load_summary(study_dir):
+    with open(os.path.join(study_dir, "summary.json")) as f:
+        return json.load(f)
+
+
+def finished_runs(summary):
+    return [r for r in summary["runs"] if r["state"] == "done"]
