@@ -23,12 +23,14 @@ PORE_DIAMETERS = [1.76, 2.11, 2.82, 3.52, 4.23, 5.28, 6.34, 7.04]
 
 SIZES = {
     # cells per d, DEM steps with particles, warm-up DEM steps, thermo and VTK intervals
-    # tiny: the burst detector flags falls of 0.3 % within 20 fluid steps, so that seconds-long
-    # runs have burst rows for the analyses to read (not erosive bursts: flow wiggles)
+    # tiny: the burst detector flags falls of 0.3 % within 20 fluid steps, without a deposit
+    # (burst_deposits 0), so that seconds-long runs have burst rows for the analyses to read
+    # (not erosive bursts: flow wiggles)
     "tiny": dict(cells_per_d=4, steps=30000, warmup=2000, thermo_every=500, vtk_every=100,
-                 burst_drop=0.003, burst_window=20),
-    "quick": dict(cells_per_d=5, steps=2000000, warmup=50000, thermo_every=2000, vtk_every=0),
-    "paper": dict(cells_per_d=7.1, steps=100000000, warmup=50000, thermo_every=10000,
+                 burst_drop=0.003, burst_window=20, burst_deposits=0),
+    # quick and paper: 2000 fluid steps of warm-up, past the start-up transient of the flow
+    "quick": dict(cells_per_d=5, steps=2000000, warmup=200000, thermo_every=2000, vtk_every=0),
+    "paper": dict(cells_per_d=7.1, steps=100000000, warmup=200000, thermo_every=10000,
                   vtk_every=0),
 }
 
