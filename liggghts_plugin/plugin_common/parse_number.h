@@ -1,5 +1,6 @@
 #pragma once
-// Keyword values of our styles: a number in a range, or a LIGGGHTS error naming the command,
+// Keyword values of our styles: a plain decimal number in a range (number_text.h: no hex, inf
+// or nan), or a LIGGGHTS error naming the command,
 // the keyword and the valid range.
 namespace LAMMPS_NS {
 class Error;

@@ -51,7 +51,6 @@ class FixWallVoxel : public Fix {
   static constexpr int kHistoryPerContact = 6;  // normal (3), tangential spring (3)
 
  private:
-  void parse_contact_keyword(int& iarg, int narg, char** arg);
   std::shared_ptr<const lbm::VoxelGeometry> geometry_of_lbm_fix(const char* fix_id);
   // Collective: recomputes the limit from the lightest particle in the group; error->all above it.
   void check_time_step();
@@ -60,7 +59,6 @@ class FixWallVoxel : public Fix {
   std::shared_ptr<const lbm::VoxelGeometry> geometry_;
   std::unique_ptr<contact::VoxelSurface> surface_;  // search structure over *geometry_
   contact::WallContactParams params_;
-  bool kt_given_ = false, tangential_damping_given_ = false;
   std::vector<double> history_;  // [atom][kMaxContacts][kHistoryPerContact]
   std::vector<contact::SurfacePoint> points_;  // scratch, reused
   double local_stats_[5] = {0, 0, 0, 0, 0};   // contacts, force (3), largest overlap/R
