@@ -14,6 +14,7 @@
 #include "error.h"
 #include "modify.h"
 #include "lbm/input_error.h"
+#include "plugin_common/entry_guard.h"
 #include "plugin_common/stop_run.h"
 #include "lbm_pore/fix_lbm_pore.h"
 #include "update.h"
@@ -45,8 +46,8 @@ FixWallVoxel::FixWallVoxel(LAMMPS* lmp, int narg, char** arg)
   try {
     use_geometry(args.lbm_fix_id.empty() ? lbm_pore::acquire_wall_geometry(args.source)
                                          : geometry_of_lbm_fix(args.lbm_fix_id.c_str()));
-  } catch (const std::exception& e) {  // lbm::InputError, and std::bad_alloc as a last resort
-    error->all(FLERR, (std::string(kCommand) + ": " + e.what()).c_str());
+  } catch (...) {  // lbm::InputError naming the file or keyword; std::bad_alloc as a last resort
+    lbm_pore::report_current_exception(error, kCommand, lbm_pore::ErrorScope::kAllRanks);
   }
 
   vector_flag = 1;
