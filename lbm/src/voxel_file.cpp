@@ -50,8 +50,11 @@ void check_has_fluid(const std::string& path, const VoxelGeometry& g) {
                    " voxels are nonzero; 0 = fluid)");
 }
 
-// Bytes left in `in` from its current position (the stream is left there).
+// Bytes left in `in` from its current position (the stream is left there); -1 when the stream
+// cannot tell (not seekable). A header whose last line has no newline leaves the stream at
+// its end, where tellg() fails: nothing is left then (found by tests/fuzz).
 std::streamoff bytes_left(std::istream& in) {
+  if (in.eof()) return 0;
   const std::streampos here = in.tellg();
   in.seekg(0, std::ios::end);
   const std::streampos end = in.tellg();

@@ -119,6 +119,10 @@ TEST(VoxelFile, HugeHeaderSizesAreRefusedBeforeAllocatingWithBothFigures) {
   EXPECT_NE(raw_error("LBMPORE_VOXELS 1\n1000 1000 100\n1 0 0 0\nab").find("truncated: expected 100000000 voxel "
                                                                             "bytes, found 2"),
             std::string::npos);
+  // The same without the newline ending the header (the stream then ends there; tests/fuzz found it).
+  EXPECT_NE(raw_error("LBMPORE_VOXELS 1\n1000 1000 100\n1 0 0 0").find("truncated: expected 100000000 voxel bytes, "
+                                                                     "found 0"),
+            std::string::npos);
 }
 
 TEST(VoxelFile, AllSolidIsRefusedSayingThereIsNoFluid) {
