@@ -48,8 +48,10 @@ double cgroup_headroom() {
 }
 }  // namespace
 
-double lattice_bytes(const std::array<int, 3>& owned, const std::array<int, 3>& global, std::size_t real_bytes) {
-  const std::array<int, 3> padded{owned[0] + 2 * BlockLayout::kGhost, owned[1] + 2 * BlockLayout::kGhost,
+double lattice_bytes(const std::array<int, 3>& owned, const std::array<int, 3>& global,
+                     std::size_t real_bytes) {
+  const std::array<int, 3> padded{owned[0] + 2 * BlockLayout::kGhost,
+                                  owned[1] + 2 * BlockLayout::kGhost,
                                   owned[2] + 2 * BlockLayout::kGhost};
   const double per_cell = 2.0 * D3Q19::Q * double(real_bytes) + 1.0;
   return nodes(padded) * per_cell + geometry_bytes(global);
@@ -83,8 +85,9 @@ void check_fits_in_memory(double bytes, const std::string& what, const std::stri
   if (bytes < kAskBelow) return;
   const double available = available_memory_bytes();
   if (bytes <= available) return;
-  throw InputError(what + " needs " + format_bytes(bytes) + ", more than the " + format_bytes(available) +
-                   " of memory available" + (hint.empty() ? "" : "; " + hint));
+  throw InputError(what + " needs " + format_bytes(bytes) + ", more than the " +
+                   format_bytes(available) + " of memory available" +
+                   (hint.empty() ? "" : "; " + hint));
 }
 
 void check_fits_in_memory_on_every_machine(double bytes_this_rank, const std::string& what,
@@ -100,7 +103,8 @@ void check_fits_in_memory_on_every_machine(double bytes_this_rank, const std::st
 #endif
   std::string message;
   try {
-    const std::string shared = sharers > 1 ? " (" + std::to_string(sharers) + " ranks on this machine together)" : "";
+    const std::string shared =
+        sharers > 1 ? " (" + std::to_string(sharers) + " ranks on this machine together)" : "";
     check_fits_in_memory(machine_bytes, what + shared, hint);
   } catch (const InputError& e) {
     message = e.what();
@@ -108,9 +112,10 @@ void check_fits_in_memory_on_every_machine(double bytes_this_rank, const std::st
   double short_somewhere = message.empty() ? 0.0 : 1.0;
   comm.max(&short_somewhere, 1);
   if (short_somewhere == 0.0) return;
-  throw InputError(message.empty() ? what + " does not fit in the memory of another machine of this run" +
-                                         (hint.empty() ? "" : "; " + hint)
-                                   : message);
+  throw InputError(message.empty()
+                       ? what + " does not fit in the memory of another machine of this run" +
+                             (hint.empty() ? "" : "; " + hint)
+                       : message);
 }
 
 }  // namespace lbm

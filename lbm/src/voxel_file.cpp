@@ -10,8 +10,8 @@
 #include "lbm/memory_estimate.h"
 
 #ifdef LBM_PORE_HAVE_VTK
-#include <vtkDataArray.h>
 #include <vtkCellData.h>
+#include <vtkDataArray.h>
 #include <vtkImageData.h>
 #include <vtkInformation.h>
 #include <vtkPointData.h>
@@ -37,10 +37,12 @@ bool ends_with(const std::string& s, const std::string& suffix) {
 bool read_whole_line(std::istringstream& line) { return !line.fail() && (line >> std::ws).eof(); }
 
 // Refuses sizes whose voxels do not fit in memory, before anything is allocated for them.
-void check_geometry_fits(const std::string& path, const std::array<int, 3>& dims, double bytes_per_voxel) {
+void check_geometry_fits(const std::string& path, const std::array<int, 3>& dims,
+                         double bytes_per_voxel) {
   check_fits_in_memory(geometry_bytes(dims) * bytes_per_voxel,
-                       "voxel file '" + path + "': a geometry of " + std::to_string(dims[0]) + " x " +
-                           std::to_string(dims[1]) + " x " + std::to_string(dims[2]) + " voxels (its sizes)");
+                       "voxel file '" + path + "': a geometry of " + std::to_string(dims[0]) +
+                           " x " + std::to_string(dims[1]) + " x " + std::to_string(dims[2]) +
+                           " voxels (its sizes)");
 }
 
 // A geometry without a fluid voxel has nothing to simulate (and buries every particle).
@@ -77,7 +79,8 @@ VoxelGeometry read_raw_voxels(std::istream& in, const std::string& path) {
   if (!std::getline(in, line)) fail(path, "missing dimensions line '<nx> <ny> <nz>'");
   std::istringstream dims_line(line);
   dims_line >> dims[0] >> dims[1] >> dims[2];
-  if (!read_whole_line(dims_line)) fail(path, "second line must be '<nx> <ny> <nz>' (got '" + line + "')");
+  if (!read_whole_line(dims_line))
+    fail(path, "second line must be '<nx> <ny> <nz>' (got '" + line + "')");
   for (int d = 0; d < 3; ++d)
     if (dims[d] <= 0 || dims[d] > 100000) fail(path, "dimensions must be in [1, 100000]");
   double spacing = 0;
@@ -92,8 +95,8 @@ VoxelGeometry read_raw_voxels(std::istream& in, const std::string& path) {
   const double expected = geometry_bytes(dims);
   const std::streamoff left = bytes_left(in);
   if (left >= 0 && double(left) < expected)
-    fail(path, "truncated: expected " + std::to_string(std::size_t(expected)) + " voxel bytes, found " +
-                   std::to_string(left));
+    fail(path, "truncated: expected " + std::to_string(std::size_t(expected)) +
+                   " voxel bytes, found " + std::to_string(left));
   VoxelGeometry g(dims, spacing, origin);
   std::string bytes(g.num_voxels(), '\0');
   in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
@@ -126,8 +129,10 @@ VoxelGeometry load_vti(const std::string& path) {
   reader->GetOutputInformation(0)->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent);
   // VTK's array (up to 8 bytes a value) and the geometry (one byte). An empty or inverted
   // extent is refused below, by the geometry's own size check.
-  const std::array<int, 3> extent_dims{extent[1] - extent[0] + 1, extent[3] - extent[2] + 1, extent[5] - extent[4] + 1};
-  if (extent_dims[0] > 0 && extent_dims[1] > 0 && extent_dims[2] > 0) check_geometry_fits(path, extent_dims, 9.0);
+  const std::array<int, 3> extent_dims{extent[1] - extent[0] + 1, extent[3] - extent[2] + 1,
+                                       extent[5] - extent[4] + 1};
+  if (extent_dims[0] > 0 && extent_dims[1] > 0 && extent_dims[2] > 0)
+    check_geometry_fits(path, extent_dims, 9.0);
   reader->Update();
   vtkImageData* image = reader->GetOutput();
   int vtk_dims[3];

@@ -13,7 +13,7 @@ namespace lbm_pore {
 // Sets the given keywords of `params` (the others keep their value). Throws lbm::InputError
 // "<command>: ..." naming the keyword and its range (kn > 0, kc >= 0, damping in [0, 1]), an
 // unknown keyword, a keyword without value or one given twice.
-void parse_dashdot_coefficients(const std::vector<std::string>& words, contact::PairContactParams& params,
-                                const std::string& command);
+void parse_dashdot_coefficients(const std::vector<std::string>& words,
+                                contact::PairContactParams& params, const std::string& command);
 
 }  // namespace lbm_pore

@@ -11,17 +11,17 @@
 
 #include "atom.h"
 #include "comm.h"
+#include "dashdot_arguments.h"
 #include "error.h"
 #include "fix.h"
 #include "force.h"
 #include "group.h"
+#include "lbm/input_error.h"
 #include "memory.h"
 #include "modify.h"
 #include "neigh_list.h"
 #include "neigh_request.h"
 #include "neighbor.h"
-#include "dashdot_arguments.h"
-#include "lbm/input_error.h"
 #include "plugin_common/stop_run.h"
 #include "update.h"
 
@@ -62,7 +62,8 @@ void PairLbmDashdot::parse_coefficients(int first, int narg, char** arg,
                                         contact::PairContactParams& params,
                                         const char* command) {
   try {
-    lbm_pore::parse_dashdot_coefficients(std::vector<std::string>(arg + first, arg + narg), params, command);
+    lbm_pore::parse_dashdot_coefficients(std::vector<std::string>(arg + first, arg + narg), params,
+                                         command);
   } catch (const lbm::InputError& e) {
     error->all(FLERR, e.what());
   }

@@ -30,15 +30,16 @@ class Words {
     const std::string word = text(keyword);
     const std::optional<double> v = read_decimal(word);  // plain decimal: no hex, inf, nan
     if (!v || !(lo_open ? *v > lo : *v >= lo) || *v > hi)
-      fail("keyword '" + keyword + "' = '" + word + "': must be a number in " + interval_text(lo, !lo_open, hi));
+      fail("keyword '" + keyword + "' = '" + word + "': must be a number in " +
+           interval_text(lo, !lo_open, hi));
     return *v;
   }
   int integer(const std::string& keyword, int lo, int hi) {
     const std::string word = text(keyword);
     const std::optional<int> v = read_decimal_integer(word);
     if (!v || *v < lo || *v > hi)
-      fail("keyword '" + keyword + "' = '" + word + "': must be an integer in [" + std::to_string(lo) + ", " +
-           std::to_string(hi) + "]");
+      fail("keyword '" + keyword + "' = '" + word + "': must be an integer in [" +
+           std::to_string(lo) + ", " + std::to_string(hi) + "]");
     return *v;
   }
   bool yes_no(const std::string& keyword) {
@@ -54,7 +55,8 @@ class Words {
   }
   // Each keyword once: a repeated one used to win silently over the first.
   void require_first_use(const std::string& keyword) {
-    if (!seen_.insert(keyword).second) throw lbm::InputError(duplicate_keyword_message("fix lbm/pore", keyword));
+    if (!seen_.insert(keyword).second)
+      throw lbm::InputError(duplicate_keyword_message("fix lbm/pore", keyword));
   }
 
  private:
@@ -96,8 +98,10 @@ void parse_pore_scene(Words& words, PoreOptions& o) {
 double non_negative_drive(Words& words, const std::string& key) {
   const double value = words.number(key, -kInf, kInf);
   if (value < 0.0)
-    fail("keyword '" + key + "' = '" + Words::format(value) + "': must be a number in [0, inf]: the flow runs "
-         "along +x, from the inlet at x-lo to the outlet at x-hi; for the opposite direction mirror the scene "
+    fail("keyword '" + key + "' = '" + Words::format(value) +
+         "': must be a number in [0, inf]: the flow runs "
+         "along +x, from the inlet at x-lo to the outlet at x-hi; for the opposite direction "
+         "mirror the scene "
          "(0 = a closed box without drive)");
   return value;
 }

@@ -38,13 +38,15 @@ void check_scene_size(const PoreOptions& o) {
   const double length_cells = std::round(o.inlet_length / dx) + std::round(o.free_length / dx) +
                               std::round(o.pore_length / dx) + std::round(o.outlet_length / dx);
   const double width_cells = std::round(o.width / dx);
-  const std::string lattice = "scene pore: with dx = " + format(dx) + " the lattice has " + format(length_cells) +
-                              " x " + format(width_cells) + " x " + format(width_cells) + " nodes";
+  const std::string lattice = "scene pore: with dx = " + format(dx) + " the lattice has " +
+                              format(length_cells) + " x " + format(width_cells) + " x " +
+                              format(width_cells) + " nodes";
   const std::string hint = "raise dx or shorten the scene";
   if (length_cells > kMaxCellsPerAxis || width_cells > kMaxCellsPerAxis)
     throw lbm::InputError(lattice + ", more than 2^30 along an axis; " + hint);
-  lbm::check_fits_in_memory(2.0 * lbm::geometry_bytes({int(length_cells), int(width_cells), int(width_cells)}),
-                            lattice + ", whose geometry (a byte per node, twice on every rank)", hint);
+  lbm::check_fits_in_memory(
+      2.0 * lbm::geometry_bytes({int(length_cells), int(width_cells), int(width_cells)}),
+      lattice + ", whose geometry (a byte per node, twice on every rank)", hint);
 }
 
 // The nearest folder of `path` (itself or an ancestor) that exists must be a folder this
@@ -54,18 +56,20 @@ void check_writable_location(const std::string& keyword, const std::filesystem::
   namespace fs = std::filesystem;
   std::error_code ec;
   fs::path existing = path.empty() ? fs::path(".") : path;
-  while (!fs::exists(existing, ec) && existing.has_parent_path() && existing != existing.parent_path())
+  while (!fs::exists(existing, ec) && existing.has_parent_path() &&
+         existing != existing.parent_path())
     existing = existing.parent_path();
   if (!fs::exists(existing, ec)) existing = ".";  // a relative path whose first folder is new
   if (!fs::is_directory(existing, ec))
-    throw lbm::InputError(keyword + ": '" + existing.string() + "' exists and is not a directory (for '" +
-                          path.string() + "'); give another path");
+    throw lbm::InputError(keyword + ": '" + existing.string() +
+                          "' exists and is not a directory (for '" + path.string() +
+                          "'); give another path");
   // Creating (and removing) a file is the only test that also holds for root and read-only mounts.
   std::string probe = (existing / ".lbm_pore_write_test_XXXXXX").string();
   const int fd = mkstemp(probe.data());
   if (fd < 0)
-    throw lbm::InputError(keyword + ": cannot create files in the directory '" + existing.string() + "' (for '" +
-                          path.string() + "'): " + std::strerror(errno));
+    throw lbm::InputError(keyword + ": cannot create files in the directory '" + existing.string() +
+                          "' (for '" + path.string() + "'): " + std::strerror(errno));
   close(fd);
   std::remove(probe.c_str());
 }
@@ -104,11 +108,13 @@ void check_output_paths(const PoreOptions& o) {
   std::error_code ec;
   if (o.vtk_every > 0) {
     if (fs::exists(o.vtk_directory, ec) && !fs::is_directory(o.vtk_directory, ec))
-      throw lbm::InputError("vtk: '" + o.vtk_directory + "' exists and is not a directory; give a directory");
+      throw lbm::InputError("vtk: '" + o.vtk_directory +
+                            "' exists and is not a directory; give a directory");
     check_writable_location("vtk", o.vtk_directory);
   }
-  for (const auto& [keyword, file] : {std::pair<std::string, std::string>{"checkpoint", o.checkpoint_prefix},
-                                      std::pair<std::string, std::string>{"burst_file", o.burst_file}}) {
+  for (const auto& [keyword, file] :
+       {std::pair<std::string, std::string>{"checkpoint", o.checkpoint_prefix},
+        std::pair<std::string, std::string>{"burst_file", o.burst_file}}) {
     if (file.empty()) continue;
     if (fs::is_directory(file, ec))
       throw lbm::InputError(keyword + ": '" + file + "' is a directory; give a file name");
@@ -116,14 +122,16 @@ void check_output_paths(const PoreOptions& o) {
   }
 }
 
-void check_lattice_memory(const PoreOptions& o, const lbm::Box& owned, const std::array<int, 3>& global,
-                          const lbm::Communicator& comm) {
-  const std::string what = "the lattice of " + std::to_string(global[0]) + " x " + std::to_string(global[1]) +
-                           " x " + std::to_string(global[2]) + " nodes (dx = " + format(o.dx) + "), " +
-                           std::to_string(owned.size(0)) + " x " + std::to_string(owned.size(1)) + " x " +
+void check_lattice_memory(const PoreOptions& o, const lbm::Box& owned,
+                          const std::array<int, 3>& global, const lbm::Communicator& comm) {
+  const std::string what = "the lattice of " + std::to_string(global[0]) + " x " +
+                           std::to_string(global[1]) + " x " + std::to_string(global[2]) +
+                           " nodes (dx = " + format(o.dx) + "), " + std::to_string(owned.size(0)) +
+                           " x " + std::to_string(owned.size(1)) + " x " +
                            std::to_string(owned.size(2)) + " on this rank,";
-  lbm::check_fits_in_memory_on_every_machine(lbm::lattice_bytes({owned.size(0), owned.size(1), owned.size(2)}, global),
-                                             what, "raise dx, shrink the scene or run on more machines", comm);
+  lbm::check_fits_in_memory_on_every_machine(
+      lbm::lattice_bytes({owned.size(0), owned.size(1), owned.size(2)}, global), what,
+      "raise dx, shrink the scene or run on more machines", comm);
 }
 
 lbm::FlowDrive drive_of(const PoreOptions& o, const coupling::UnitConversion& units) {

@@ -36,8 +36,8 @@ void check_output_paths(const PoreOptions& options);
 // lattice) must fit in the memory of its machine together with the blocks of the other ranks
 // there (lbm/memory_estimate.h). Throws lbm::InputError on every rank, naming dx, the lattice's
 // size, the bytes and the memory available.
-void check_lattice_memory(const PoreOptions& options, const lbm::Box& owned, const std::array<int, 3>& global,
-                          const lbm::Communicator& comm);
+void check_lattice_memory(const PoreOptions& options, const lbm::Box& owned,
+                          const std::array<int, 3>& global, const lbm::Communicator& comm);
 
 // The drive along +x in lattice units; throws lbm::InputError naming 'velocity' or
 // 'pressure_loss' when it exceeds the scheme's limits (lbm/stability.h).

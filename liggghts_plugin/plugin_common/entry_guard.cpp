@@ -27,8 +27,10 @@ void report_current_exception(LAMMPS_NS::Error* error, const char* command, Erro
     message = prefixed(command, e.what());
     input = true;
   } catch (const std::bad_alloc&) {
-    message = prefixed(command, "out of memory; lower the lattice size (raise dx, shrink the scene) or run on more "
-                                "ranks or machines");
+    message = prefixed(
+        command,
+        "out of memory; lower the lattice size (raise dx, shrink the scene) or run on more "
+        "ranks or machines");
   } catch (const std::exception& e) {
     message = prefixed(command, std::string("internal error: ") + e.what());
   } catch (...) {
@@ -40,13 +42,16 @@ void report_current_exception(LAMMPS_NS::Error* error, const char* command, Erro
     error->one(FLERR, message.c_str());
 }
 
-void refuse_second_instance(LAMMPS_NS::Modify* modify, LAMMPS_NS::Error* error, const LAMMPS_NS::Fix* self) {
+void refuse_second_instance(LAMMPS_NS::Modify* modify, LAMMPS_NS::Error* error,
+                            const LAMMPS_NS::Fix* self) {
   for (int i = 0; i < modify->nfix; ++i) {
     const LAMMPS_NS::Fix* other = modify->fix[i];
-    if (!other || other == self || std::strcmp(other->style, self->style) != 0 || std::strcmp(other->id, self->id) == 0)
+    if (!other || other == self || std::strcmp(other->style, self->style) != 0 ||
+        std::strcmp(other->id, self->id) == 0)
       continue;
-    const std::string message = std::string("fix ") + self->style + ": fix '" + other->id + "' is a fix " +
-                                self->style + " already; one owns the fluid and the geometry of a run ('unfix " +
+    const std::string message = std::string("fix ") + self->style + ": fix '" + other->id +
+                                "' is a fix " + self->style +
+                                " already; one owns the fluid and the geometry of a run ('unfix " +
                                 other->id + "' first to replace it)";
     error->all(FLERR, message.c_str());
   }

@@ -23,6 +23,7 @@ void report_current_exception(LAMMPS_NS::Error* error, const char* command, Erro
 
 // error->all when `modify` holds another fix of `self`'s style (a fix of the same ID is being
 // replaced, so it does not count): e.g. two fix lbm/pore would own two fluids in one box.
-void refuse_second_instance(LAMMPS_NS::Modify* modify, LAMMPS_NS::Error* error, const LAMMPS_NS::Fix* self);
+void refuse_second_instance(LAMMPS_NS::Modify* modify, LAMMPS_NS::Error* error,
+                            const LAMMPS_NS::Fix* self);
 
 }  // namespace lbm_pore

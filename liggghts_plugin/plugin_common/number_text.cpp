@@ -74,24 +74,26 @@ std::string interval_text(double min, bool min_inclusive, double max) {
   return std::string(min_inclusive ? "[" : "(") + format(min) + ", " + format(max) + "]";
 }
 
-double number_in_range(const std::string& command, const std::string& keyword, const std::string& text,
-                       double min, bool min_inclusive, double max) {
+double number_in_range(const std::string& command, const std::string& keyword,
+                       const std::string& text, double min, bool min_inclusive, double max) {
   const std::optional<double> value = read_decimal(text);
   if (value && (min_inclusive ? *value >= min : *value > min) && *value <= max) return *value;
   char range[128];
   if (max >= 1e300)
     std::snprintf(range, sizeof range, "a number %s %g", min_inclusive ? ">=" : ">", min);
   else
-    std::snprintf(range, sizeof range, "a number in %s%g, %g]", min_inclusive ? "[" : "(", min, max);
+    std::snprintf(range, sizeof range, "a number in %s%g, %g]", min_inclusive ? "[" : "(", min,
+                  max);
   throw lbm::InputError(command + ": " + keyword + " must be " + range + " (got '" + text + "')");
 }
 
-int integer_in_range(const std::string& command, const std::string& keyword, const std::string& text, int min,
-                     int max) {
+int integer_in_range(const std::string& command, const std::string& keyword,
+                     const std::string& text, int min, int max) {
   const std::optional<int> value = read_decimal_integer(text);
   if (value && *value >= min && *value <= max) return *value;
-  throw lbm::InputError(command + ": " + keyword + " must be an integer in [" + std::to_string(min) + ", " +
-                        std::to_string(max) + "] (got '" + text + "')");
+  throw lbm::InputError(command + ": " + keyword + " must be an integer in [" +
+                        std::to_string(min) + ", " + std::to_string(max) + "] (got '" + text +
+                        "')");
 }
 
 std::string duplicate_keyword_message(const std::string& command, const std::string& keyword) {

@@ -21,12 +21,13 @@ std::string interval_text(double min, bool min_inclusive, double max);
 
 // min < value <= max (min <= value <= max when min_inclusive), else lbm::InputError
 // "<command>: <keyword> must be a number > 0 (got '<text>')" (or "... in [a, b] ...").
-double number_in_range(const std::string& command, const std::string& keyword, const std::string& text,
-                       double min, bool min_inclusive, double max);
+double number_in_range(const std::string& command, const std::string& keyword,
+                       const std::string& text, double min, bool min_inclusive, double max);
 
-// min <= value <= max, else lbm::InputError "<command>: <keyword> must be an integer in [a, b] (got ..)".
-int integer_in_range(const std::string& command, const std::string& keyword, const std::string& text, int min,
-                     int max);
+// min <= value <= max, else lbm::InputError "<command>: <keyword> must be an integer in [a, b] (got
+// ..)".
+int integer_in_range(const std::string& command, const std::string& keyword,
+                     const std::string& text, int min, int max);
 
 // "<command>: keyword '<keyword>' is given twice; give it once" (the parsers used to let the
 // last one win silently).

@@ -11,7 +11,9 @@ namespace {
 const std::string kCommand = "fix wall/voxel";
 constexpr double kBig = 1e300;
 
-[[noreturn]] void fail(const std::string& message) { throw lbm::InputError(kCommand + ": " + message); }
+[[noreturn]] void fail(const std::string& message) {
+  throw lbm::InputError(kCommand + ": " + message);
+}
 
 // Reads `count` values after the keyword at `i`.
 const std::string& value_of(const std::vector<std::string>& words, std::size_t i, std::size_t count,
@@ -22,7 +24,8 @@ const std::string& value_of(const std::vector<std::string>& words, std::size_t i
 }
 
 // One contact keyword and its value into `params`; false when `key` is none of them.
-bool parse_contact_keyword(const std::string& key, const std::string& value, contact::WallContactParams& params) {
+bool parse_contact_keyword(const std::string& key, const std::string& value,
+                           contact::WallContactParams& params) {
   if (key == "kw") {
     params.normal.k_n = number_in_range(kCommand, "kw", value, 0.0, false, kBig);
   } else if (key == "ka") {
@@ -34,7 +37,8 @@ bool parse_contact_keyword(const std::string& key, const std::string& value, con
   } else if (key == "kt") {
     params.friction.k_t = number_in_range(kCommand, "kt", value, 0.0, false, kBig);
   } else if (key == "tangential_damping") {
-    params.friction.damping_ratio = number_in_range(kCommand, "tangential_damping", value, 0.0, true, 1.0);
+    params.friction.damping_ratio =
+        number_in_range(kCommand, "tangential_damping", value, 0.0, true, 1.0);
   } else {
     return false;
   }
@@ -63,8 +67,8 @@ WallVoxelArguments parse_wall_voxel_arguments(const std::vector<std::string>& wo
       a.source.kind = WallGeometrySource::Kind::kPoreScene;
       ++geometries;
       i += 1;
-    } else if (key == "inlet_length" || key == "free_length" || key == "pore_length" || key == "outlet_length" ||
-               key == "width") {
+    } else if (key == "inlet_length" || key == "free_length" || key == "pore_length" ||
+               key == "outlet_length" || key == "width") {
       const int value = integer_in_range(kCommand, key, value_of(words, i, 1), 1, 1 << 20);
       if (key == "inlet_length") a.source.pore.inlet_length = value;
       if (key == "free_length") a.source.pore.free_length = value;
@@ -73,30 +77,38 @@ WallVoxelArguments parse_wall_voxel_arguments(const std::vector<std::string>& wo
       if (key == "width") a.source.pore.width = value;
       i += 2;
     } else if (key == "pore_diameter") {
-      a.source.pore.pore_diameter = number_in_range(kCommand, "pore_diameter", value_of(words, i, 1), 0.0, false, kBig);
+      a.source.pore.pore_diameter =
+          number_in_range(kCommand, "pore_diameter", value_of(words, i, 1), 0.0, false, kBig);
       i += 2;
     } else if (key == "spacing") {
-      a.source.spacing = number_in_range(kCommand, "spacing", value_of(words, i, 1), 0.0, false, kBig);
+      a.source.spacing =
+          number_in_range(kCommand, "spacing", value_of(words, i, 1), 0.0, false, kBig);
       i += 2;
     } else if (key == "origin") {
       for (std::size_t c = 0; c < 3; ++c)
-        a.source.origin[c] = number_in_range(kCommand, "origin", value_of(words, i, 3, c), -kBig, true, kBig);
+        a.source.origin[c] =
+            number_in_range(kCommand, "origin", value_of(words, i, 3, c), -kBig, true, kBig);
       i += 4;
     } else {
       if (i + 1 >= words.size()) fail("keyword '" + key + "' needs a value");
       if (!parse_contact_keyword(key, words[i + 1], a.params))
-        fail("unknown keyword '" + key +
-             "' (expected file, pore, inlet_length, free_length, pore_length, outlet_length, width, "
-             "pore_diameter, spacing, origin, kw, ka, damping, mu, kt or tangential_damping)");
+        fail(
+            "unknown keyword '" + key +
+            "' (expected file, pore, inlet_length, free_length, pore_length, outlet_length, width, "
+            "pore_diameter, spacing, origin, kw, ka, damping, mu, kt or tangential_damping)");
       i += 2;
     }
   }
   if (geometries > 1) fail("give one geometry: 'lbm <fix-ID>', 'file <path>' or 'pore'");
   if (geometries == 0)
-    fail("no geometry: give keyword 'lbm <fix-ID>' (the geometry of fix lbm/pore), 'file <path>' or 'pore'");
+    fail(
+        "no geometry: give keyword 'lbm <fix-ID>' (the geometry of fix lbm/pore), 'file <path>' or "
+        "'pore'");
   // Defaults tied to the wall stiffness and damping unless given.
-  if (!seen.count("kt")) a.params.friction.k_t = contact::default_tangential_stiffness(a.params.normal.k_n);
-  if (!seen.count("tangential_damping")) a.params.friction.damping_ratio = a.params.normal.damping_ratio;
+  if (!seen.count("kt"))
+    a.params.friction.k_t = contact::default_tangential_stiffness(a.params.normal.k_n);
+  if (!seen.count("tangential_damping"))
+    a.params.friction.damping_ratio = a.params.normal.damping_ratio;
   return a;
 }
 

@@ -12,9 +12,10 @@
 namespace lbm_pore {
 
 struct WallVoxelArguments {
-  WallGeometrySource source;     // 'file <path>' or 'pore' with its lengths
-  std::string lbm_fix_id;        // 'lbm <fix-ID>': the geometry of that fix lbm/pore ("" if not given)
-  contact::WallContactParams params;  // kt and tangential_damping follow kw and damping unless given
+  WallGeometrySource source;  // 'file <path>' or 'pore' with its lengths
+  std::string lbm_fix_id;     // 'lbm <fix-ID>': the geometry of that fix lbm/pore ("" if not given)
+  contact::WallContactParams
+      params;  // kt and tangential_damping follow kw and damping unless given
 };
 
 // words: the arguments after 'wall/voxel'. Throws lbm::InputError "fix wall/voxel: ..." naming

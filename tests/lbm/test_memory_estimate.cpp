@@ -12,9 +12,12 @@
 TEST(MemoryEstimate, LatticeBytesCountBothPopulationFieldsNodeTypesAndTheGeometry) {
   // 4 x 5 x 6 owned nodes, one ghost layer: 6 x 7 x 8 cells of 2 * 19 reals and a type byte,
   // plus a byte per voxel of the 10 x 10 x 10 global geometry.
-  EXPECT_EQ(lbm::lattice_bytes({4, 5, 6}, {10, 10, 10}, 8), 6.0 * 7 * 8 * (2 * 19 * 8 + 1) + 1000.0);
-  EXPECT_EQ(lbm::lattice_bytes({4, 5, 6}, {10, 10, 10}, 4), 6.0 * 7 * 8 * (2 * 19 * 4 + 1) + 1000.0);
-  EXPECT_EQ(lbm::lattice_bytes({4, 5, 6}, {10, 10, 10}), lbm::lattice_bytes({4, 5, 6}, {10, 10, 10}, sizeof(lbm::Real)));
+  EXPECT_EQ(lbm::lattice_bytes({4, 5, 6}, {10, 10, 10}, 8),
+            6.0 * 7 * 8 * (2 * 19 * 8 + 1) + 1000.0);
+  EXPECT_EQ(lbm::lattice_bytes({4, 5, 6}, {10, 10, 10}, 4),
+            6.0 * 7 * 8 * (2 * 19 * 4 + 1) + 1000.0);
+  EXPECT_EQ(lbm::lattice_bytes({4, 5, 6}, {10, 10, 10}),
+            lbm::lattice_bytes({4, 5, 6}, {10, 10, 10}, sizeof(lbm::Real)));
   // No overflow for absurd sizes.
   EXPECT_GT(lbm::geometry_bytes({1 << 30, 1 << 30, 1 << 30}), 1e27);
 }
@@ -47,7 +50,8 @@ TEST(MemoryEstimate, AGeometryThatDoesNotFitIsRefusedByItsConstructor) {
     lbm::make_pore_scene(spec);
     FAIL();
   } catch (const lbm::InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("voxel geometry: 1048646 x 1048576 x 1048576 voxels"), std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("voxel geometry: 1048646 x 1048576 x 1048576 voxels"),
+              std::string::npos)
         << e.what();
   }
 }

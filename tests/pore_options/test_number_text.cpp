@@ -11,13 +11,15 @@ using lbm_pore::read_decimal;
 using lbm_pore::read_decimal_integer;
 
 TEST(NumberText, PlainDecimalsReadAsStrtodReadsThem) {
-  for (const char* text : {"1", "-2.5", "+3", ".5", "5.", "1e-3", "2.5E+04", "0", "-0", "0.142857", "1e300"})
+  for (const char* text :
+       {"1", "-2.5", "+3", ".5", "5.", "1e-3", "2.5E+04", "0", "-0", "0.142857", "1e300"})
     EXPECT_EQ(read_decimal(text).value(), std::strtod(text, nullptr)) << text;
 }
 
 TEST(NumberText, HexInfNanBlanksAndTrailingWordsAreRefused) {
-  for (const char* text : {"0x10", "0X1p3", "inf", "-inf", "nan", "NAN", "infinity", " 1", "1 ", "1,5", "1e",
-                           "e5", ".", "-", "", "1e5x", "--1", "1.2.3", "1e400", "1e-400", "0x", "+.e1"})
+  for (const char* text : {"0x10", "0X1p3", "inf",   "-inf",   "nan", "NAN", "infinity", " 1",
+                           "1 ",   "1,5",   "1e",    "e5",     ".",   "-",   "",         "1e5x",
+                           "--1",  "1.2.3", "1e400", "1e-400", "0x",  "+.e1"})
     EXPECT_FALSE(read_decimal(text).has_value()) << "'" << text << "'";
 }
 
@@ -25,7 +27,8 @@ TEST(NumberText, IntegersAreDigitsOnlyAndFitAnInt) {
   EXPECT_EQ(read_decimal_integer("100").value(), 100);
   EXPECT_EQ(read_decimal_integer("-7").value(), -7);
   EXPECT_EQ(read_decimal_integer("+7").value(), 7);
-  for (const char* text : {"0x10", "1e2", "1.0", "", "+", " 3", "3 ", "99999999999", "-99999999999"})
+  for (const char* text :
+       {"0x10", "1e2", "1.0", "", "+", " 3", "3 ", "99999999999", "-99999999999"})
     EXPECT_FALSE(read_decimal_integer(text).has_value()) << "'" << text << "'";
 }
 

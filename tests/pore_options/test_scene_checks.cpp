@@ -20,7 +20,8 @@ lbm_pore::PoreOptions options_of(const std::string& line) {
   return lbm_pore::parse_pore_options(words);
 }
 
-const std::string kScene = " scene pore inlet 3 free 2 length 4 outlet 3 width 5 diameter 3.5 velocity 0.01";
+const std::string kScene =
+    " scene pore inlet 3 free 2 length 4 outlet 3 width 5 diameter 3.5 velocity 0.01";
 
 std::string output_error(const std::string& extra) {
   try {
@@ -41,8 +42,8 @@ fs::path scratch(const std::string& name) {
 TEST(OutputPaths, WritableFoldersPassAndNothingIsLeftBehind) {
   const fs::path dir = scratch("ok");
   fs::create_directories(dir);
-  EXPECT_EQ(output_error(" vtk 10 " + (dir / "new" / "deeper").string() + " checkpoint " + (dir / "ck").string() +
-                         " burst_file " + (dir / "bursts.txt").string()),
+  EXPECT_EQ(output_error(" vtk 10 " + (dir / "new" / "deeper").string() + " checkpoint " +
+                         (dir / "ck").string() + " burst_file " + (dir / "bursts.txt").string()),
             "");
   EXPECT_FALSE(fs::exists(dir / "new"));  // checked, not created (the writer creates it)
   EXPECT_TRUE(fs::is_empty(dir));         // the probe file is removed
@@ -54,18 +55,23 @@ TEST(OutputPaths, AFileWhereAFolderIsNeededIsRefusedNamingTheKeyword) {
   fs::create_directories(dir);
   const fs::path file = dir / "plain_file";
   std::ofstream(file) << "x";
-  EXPECT_NE(output_error(" vtk 10 " + file.string()).find("vtk: '" + file.string() + "' exists and is not a directory"),
+  EXPECT_NE(output_error(" vtk 10 " + file.string())
+                .find("vtk: '" + file.string() + "' exists and is not a directory"),
             std::string::npos);
-  EXPECT_NE(output_error(" vtk 10 " + (file / "sub").string()).find("is not a directory"), std::string::npos);
-  EXPECT_NE(output_error(" checkpoint " + (file / "ck").string()).find("checkpoint:"), std::string::npos);
-  EXPECT_NE(output_error(" burst_file " + dir.string()).find("burst_file: '" + dir.string() + "' is a directory"),
+  EXPECT_NE(output_error(" vtk 10 " + (file / "sub").string()).find("is not a directory"),
+            std::string::npos);
+  EXPECT_NE(output_error(" checkpoint " + (file / "ck").string()).find("checkpoint:"),
+            std::string::npos);
+  EXPECT_NE(output_error(" burst_file " + dir.string())
+                .find("burst_file: '" + dir.string() + "' is a directory"),
             std::string::npos);
 }
 
 TEST(OutputPaths, AFolderThatRefusesFilesIsRefused) {
   // /proc refuses new files even to root (the tests run as root, where permissions do not).
   if (!fs::is_directory("/proc")) GTEST_SKIP() << "no /proc";
-  EXPECT_NE(output_error(" vtk 10 /proc/lbm_vtk").find("vtk: cannot create files in the directory '/proc'"),
+  EXPECT_NE(output_error(" vtk 10 /proc/lbm_vtk")
+                .find("vtk: cannot create files in the directory '/proc'"),
             std::string::npos);
 }
 
@@ -76,24 +82,29 @@ TEST(SceneSize, ALatticeTooLargeForMemoryIsRefusedNamingDxBeforeAllocating) {
     FAIL();
   } catch (const lbm::InputError& e) {
     const std::string what = e.what();
-    EXPECT_NE(what.find("with dx = 0.0001 the lattice has 120000 x 50000 x 50000 nodes"), std::string::npos) << what;
+    EXPECT_NE(what.find("with dx = 0.0001 the lattice has 120000 x 50000 x 50000 nodes"),
+              std::string::npos)
+        << what;
     EXPECT_NE(what.find("of memory available; raise dx"), std::string::npos) << what;
   }
   try {
     lbm_pore::build_scene(options_of("dx 1e-300" + kScene), box_lo);  // cells no longer fit an int
     FAIL();
   } catch (const lbm::InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("more than 2^30 along an axis"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("more than 2^30 along an axis"), std::string::npos)
+        << e.what();
   }
 }
 
 TEST(ClosedBox, VelocityZeroIsValidAndDepositsUseTheDefaultSpeed) {
-  const lbm_pore::PoreOptions o = options_of("dx 1 scene pore inlet 3 free 2 length 4 outlet 3 width 5 diameter 3.5 "
-                                             "velocity 0");
+  const lbm_pore::PoreOptions o = options_of(
+      "dx 1 scene pore inlet 3 free 2 length 4 outlet 3 width 5 diameter 3.5 "
+      "velocity 0");
   const coupling::UnitConversion units(lbm_pore::unit_inputs(o, 0.01));
   const lbm::FlowDrive drive = lbm_pore::drive_of(o, units);
   EXPECT_EQ(drive.inlet_velocity, 0.0);
   // A fraction of 0 would be 0: nothing would ever count as deposited.
-  EXPECT_EQ(lbm_pore::deposit_speed_threshold(o, units, drive), coupling::DepositionCriteria{}.speed_threshold);
+  EXPECT_EQ(lbm_pore::deposit_speed_threshold(o, units, drive),
+            coupling::DepositionCriteria{}.speed_threshold);
   EXPECT_GT(lbm_pore::deposit_speed_threshold(o, units, drive), 0.0);
 }

@@ -43,5 +43,4 @@ void check_fits_in_memory(double bytes, const std::string& what, const std::stri
 void check_fits_in_memory_on_every_machine(double bytes_this_rank, const std::string& what,
                                            const std::string& hint, const Communicator& comm);
 
-
 }  // namespace lbm

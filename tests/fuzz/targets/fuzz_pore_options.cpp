@@ -13,8 +13,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     const lbm_pore::PoreOptions o = lbm_pore::parse_pore_options(fuzz_words(data, size));
     const bool valid = o.dx > 0 && std::isfinite(o.dx) && o.rho > 0 && o.nu > 0 && o.n_dem >= 1 &&
-                       o.drive_value >= 0 && std::isfinite(o.drive_value) && o.pore_diameter <= o.width &&
-                       o.scene != lbm_pore::PoreOptions::Scene::kNone;
+                       o.drive_value >= 0 && std::isfinite(o.drive_value) &&
+                       o.pore_diameter <= o.width && o.scene != lbm_pore::PoreOptions::Scene::kNone;
     if (!valid) __builtin_trap();
   } catch (const lbm::InputError&) {
   }

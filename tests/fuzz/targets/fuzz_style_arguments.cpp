@@ -24,7 +24,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     } else {
       contact::PairContactParams p;
       lbm_pore::parse_dashdot_coefficients(words, p, "pair_style lbm/dashdot");
-      if (!(p.normal.k_n > 0 && p.cohesion.k_c >= 0 && p.normal.damping_ratio >= 0 && p.normal.damping_ratio <= 1))
+      if (!(p.normal.k_n > 0 && p.cohesion.k_c >= 0 && p.normal.damping_ratio >= 0 &&
+            p.normal.damping_ratio <= 1))
         __builtin_trap();
     }
   } catch (const lbm::InputError&) {

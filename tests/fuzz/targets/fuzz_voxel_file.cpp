@@ -14,7 +14,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     const lbm::VoxelGeometry g = lbm::read_raw_voxels(in, "fuzz.raw");
     // A geometry read must be consistent with its header and have a fluid voxel.
-    if (g.num_voxels() != std::size_t(g.dims()[0]) * g.dims()[1] * g.dims()[2] || g.count_solid() == g.num_voxels())
+    if (g.num_voxels() != std::size_t(g.dims()[0]) * g.dims()[1] * g.dims()[2] ||
+        g.count_solid() == g.num_voxels())
       __builtin_trap();
   } catch (const lbm::InputError&) {
   }
