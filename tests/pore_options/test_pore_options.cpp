@@ -3,15 +3,10 @@
 #include <sstream>
 
 #include "lbm/input_error.h"
+#include "split_words.h"
 #include "lbm_pore_options.h"
 
 namespace {
-std::vector<std::string> split(const std::string& line) {
-  std::istringstream in(line);
-  std::vector<std::string> words;
-  for (std::string w; in >> w;) words.push_back(w);
-  return words;
-}
 std::string error_of(const std::string& line) {
   try {
     lbm_pore::parse_pore_options(split(line));

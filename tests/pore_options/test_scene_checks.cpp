@@ -9,16 +9,12 @@
 #include "lbm/input_error.h"
 #include "lbm_pore_options.h"
 #include "pore_scene_setup.h"
+#include "split_words.h"
 
 namespace {
 namespace fs = std::filesystem;
 
-lbm_pore::PoreOptions options_of(const std::string& line) {
-  std::istringstream in(line);
-  std::vector<std::string> words;
-  for (std::string w; in >> w;) words.push_back(w);
-  return lbm_pore::parse_pore_options(words);
-}
+lbm_pore::PoreOptions options_of(const std::string& line) { return lbm_pore::parse_pore_options(split(line)); }
 
 const std::string kScene =
     " scene pore inlet 3 free 2 length 4 outlet 3 width 5 diameter 3.5 velocity 0.01";

@@ -5,15 +5,10 @@
 
 #include "dashdot/dashdot_arguments.h"
 #include "lbm/input_error.h"
+#include "split_words.h"
 #include "wall_voxel/wall_voxel_arguments.h"
 
 namespace {
-std::vector<std::string> split(const std::string& line) {
-  std::istringstream in(line);
-  std::vector<std::string> words;
-  for (std::string w; in >> w;) words.push_back(w);
-  return words;
-}
 
 template <class Parse>
 std::string error_of(Parse parse) {
