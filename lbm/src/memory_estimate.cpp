@@ -104,7 +104,8 @@ void check_fits_in_memory_on_every_machine(double bytes_this_rank, const std::st
   std::string message;
   try {
     const std::string shared =
-        sharers > 1 ? " (" + std::to_string(sharers) + " ranks on this machine together)" : "";
+        sharers > 1 ? ", with the " + std::to_string(sharers) + " ranks on this machine together,"
+                    : "";
     check_fits_in_memory(machine_bytes, what + shared, hint);
   } catch (const InputError& e) {
     message = e.what();

@@ -49,13 +49,15 @@ void check_scene_size(const PoreOptions& o) {
       lattice + ", whose geometry (a byte per node, twice on every rank)", hint);
 }
 
-// The nearest folder of `path` (itself or an ancestor) that exists must be a folder this
-// process can create files in: a file of the same name, or a folder that refuses writing,
-// would stop the run later, at the first output, after the set-up has been paid for.
-void check_writable_location(const std::string& keyword, const std::filesystem::path& path) {
+// The nearest folder of `path` that exists (itself, or its folder for a file, or an ancestor)
+// must be a folder this process can create files in: a file of the same name, or a folder that
+// refuses writing, would stop the run later, at the first output, after the set-up is paid for.
+void check_writable_location(const std::string& keyword, const std::filesystem::path& path,
+                             bool path_is_file) {
   namespace fs = std::filesystem;
   std::error_code ec;
-  fs::path existing = path.empty() ? fs::path(".") : path;
+  fs::path existing = path_is_file ? path.parent_path() : path;
+  if (existing.empty()) existing = ".";
   while (!fs::exists(existing, ec) && existing.has_parent_path() &&
          existing != existing.parent_path())
     existing = existing.parent_path();
@@ -110,7 +112,7 @@ void check_output_paths(const PoreOptions& o) {
     if (fs::exists(o.vtk_directory, ec) && !fs::is_directory(o.vtk_directory, ec))
       throw lbm::InputError("vtk: '" + o.vtk_directory +
                             "' exists and is not a directory; give a directory");
-    check_writable_location("vtk", o.vtk_directory);
+    check_writable_location("vtk", o.vtk_directory, false);
   }
   for (const auto& [keyword, file] :
        {std::pair<std::string, std::string>{"checkpoint", o.checkpoint_prefix},
@@ -118,7 +120,7 @@ void check_output_paths(const PoreOptions& o) {
     if (file.empty()) continue;
     if (fs::is_directory(file, ec))
       throw lbm::InputError(keyword + ": '" + file + "' is a directory; give a file name");
-    check_writable_location(keyword, fs::path(file).parent_path());
+    check_writable_location(keyword, file, true);
   }
 }
 
@@ -126,9 +128,9 @@ void check_lattice_memory(const PoreOptions& o, const lbm::Box& owned,
                           const std::array<int, 3>& global, const lbm::Communicator& comm) {
   const std::string what = "the lattice of " + std::to_string(global[0]) + " x " +
                            std::to_string(global[1]) + " x " + std::to_string(global[2]) +
-                           " nodes (dx = " + format(o.dx) + "), " + std::to_string(owned.size(0)) +
+                           " nodes (dx = " + format(o.dx) + "; " + std::to_string(owned.size(0)) +
                            " x " + std::to_string(owned.size(1)) + " x " +
-                           std::to_string(owned.size(2)) + " on this rank,";
+                           std::to_string(owned.size(2)) + " on this rank)";
   lbm::check_fits_in_memory_on_every_machine(
       lbm::lattice_bytes({owned.size(0), owned.size(1), owned.size(2)}, global), what,
       "raise dx, shrink the scene or run on more machines", comm);

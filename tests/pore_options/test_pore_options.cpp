@@ -3,8 +3,8 @@
 #include <sstream>
 
 #include "lbm/input_error.h"
-#include "split_words.h"
 #include "lbm_pore_options.h"
+#include "split_words.h"
 
 namespace {
 std::string error_of(const std::string& line) {

@@ -14,7 +14,9 @@
 namespace {
 namespace fs = std::filesystem;
 
-lbm_pore::PoreOptions options_of(const std::string& line) { return lbm_pore::parse_pore_options(split(line)); }
+lbm_pore::PoreOptions options_of(const std::string& line) {
+  return lbm_pore::parse_pore_options(split(line));
+}
 
 const std::string kScene =
     " scene pore inlet 3 free 2 length 4 outlet 3 width 5 diameter 3.5 velocity 0.01";
