@@ -4,7 +4,8 @@
 # conflicts with python3-vtk9 (pulled in by libvtk9-dev).
 set -euo pipefail
 packages=(cmake g++ make pkg-config liggghts libliggghts-dev liggghts-doc libvtk9-dev libeigen3-dev
-          libopenmpi-dev openmpi-bin libgtest-dev python3 python3-numpy python3-matplotlib python3-vtk9)
+          libopenmpi-dev openmpi-bin libgtest-dev python3 python3-numpy python3-matplotlib python3-vtk9
+          clang libclang-rt-14-dev)  # the last two: libFuzzer for tests/fuzz (skipped without them)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

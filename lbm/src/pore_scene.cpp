@@ -64,8 +64,10 @@ double narrowest_section_diameter(const VoxelGeometry& geometry) {
     int open = 0;
     for (int k = 0; k < d[2]; ++k)
       for (int j = 0; j < d[1]; ++j) open += !geometry.is_solid(i, j, k);
-    narrowest = std::min(narrowest, double(open));
+    // A section without fluid is a closing wall (the end layers of a closed box), not a pore.
+    if (open > 0) narrowest = std::min(narrowest, double(open));
   }
+  if (narrowest == 1e300) return 0.0;  // all solid
   return std::sqrt(4.0 * narrowest / M_PI);
 }
 

@@ -7,13 +7,16 @@
 #include <string>
 
 #include "lbm/input_error.h"
+#include "lbm/memory_estimate.h"
 
 #ifdef LBM_PORE_HAVE_VTK
-#include <vtkDataArray.h>
 #include <vtkCellData.h>
+#include <vtkDataArray.h>
 #include <vtkImageData.h>
+#include <vtkInformation.h>
 #include <vtkPointData.h>
 #include <vtkSmartPointer.h>
+#include <vtkStreamingDemandDrivenPipeline.h>
 #include <vtkXMLImageDataReader.h>
 #endif
 
@@ -30,21 +33,53 @@ bool ends_with(const std::string& s, const std::string& suffix) {
   throw InputError("voxel file '" + path + "': " + what);
 }
 
-VoxelGeometry load_raw(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) fail(path, "cannot be opened");
+// A header line's words and nothing after them but blanks (a '\r' of a Windows line end).
+bool read_whole_line(std::istringstream& line) { return !line.fail() && (line >> std::ws).eof(); }
+
+// Refuses sizes whose voxels do not fit in memory, before anything is allocated for them.
+void check_geometry_fits(const std::string& path, const std::array<int, 3>& dims,
+                         double bytes_per_voxel) {
+  check_fits_in_memory(geometry_bytes(dims) * bytes_per_voxel,
+                       "voxel file '" + path + "': a geometry of " + std::to_string(dims[0]) +
+                           " x " + std::to_string(dims[1]) + " x " + std::to_string(dims[2]) +
+                           " voxels (its sizes)");
+}
+
+// A geometry without a fluid voxel has nothing to simulate (and buries every particle).
+void check_has_fluid(const std::string& path, const VoxelGeometry& g) {
+  if (g.count_solid() == g.num_voxels())
+    fail(path, "is all solid: there is no fluid (all " + std::to_string(g.num_voxels()) +
+                   " voxels are nonzero; 0 = fluid)");
+}
+
+// Bytes left in `in` from its current position (the stream is left there); -1 when the stream
+// cannot tell (not seekable). A header whose last line has no newline leaves the stream at
+// its end, where tellg() fails: nothing is left then (found by tests/fuzz).
+std::streamoff bytes_left(std::istream& in) {
+  if (in.eof()) return 0;
+  const std::streampos here = in.tellg();
+  in.seekg(0, std::ios::end);
+  const std::streampos end = in.tellg();
+  in.seekg(here);
+  return here < 0 || end < 0 ? -1 : std::streamoff(end - here);
+}
+
+}  // namespace
+
+VoxelGeometry read_raw_voxels(std::istream& in, const std::string& path) {
   std::string line;
   if (!std::getline(in, line)) fail(path, "is empty");
   std::istringstream magic_line(line);
   std::string magic;
   int version = 0;
   magic_line >> magic >> version;
-  if (magic != kMagic || version != 1)
+  if (magic != kMagic || version != 1 || !read_whole_line(magic_line))
     fail(path, "first line must be '" + std::string(kMagic) + " 1' (got '" + line + "')");
   std::array<int, 3> dims{};
   if (!std::getline(in, line)) fail(path, "missing dimensions line '<nx> <ny> <nz>'");
   std::istringstream dims_line(line);
-  if (!(dims_line >> dims[0] >> dims[1] >> dims[2]))
+  dims_line >> dims[0] >> dims[1] >> dims[2];
+  if (!read_whole_line(dims_line))
     fail(path, "second line must be '<nx> <ny> <nz>' (got '" + line + "')");
   for (int d = 0; d < 3; ++d)
     if (dims[d] <= 0 || dims[d] > 100000) fail(path, "dimensions must be in [1, 100000]");
@@ -52,9 +87,16 @@ VoxelGeometry load_raw(const std::string& path) {
   std::array<double, 3> origin{};
   if (!std::getline(in, line)) fail(path, "missing line '<spacing> <ox> <oy> <oz>'");
   std::istringstream frame_line(line);
-  if (!(frame_line >> spacing >> origin[0] >> origin[1] >> origin[2]))
+  frame_line >> spacing >> origin[0] >> origin[1] >> origin[2];
+  if (!read_whole_line(frame_line))
     fail(path, "third line must be '<spacing> <ox> <oy> <oz>' (got '" + line + "')");
-  if (!(spacing > 0)) fail(path, "spacing must be > 0");
+  if (!(spacing > 0) || !std::isfinite(spacing)) fail(path, "spacing must be > 0");
+  check_geometry_fits(path, dims, 1.0);
+  const double expected = geometry_bytes(dims);
+  const std::streamoff left = bytes_left(in);
+  if (left >= 0 && double(left) < expected)
+    fail(path, "truncated: expected " + std::to_string(std::size_t(expected)) +
+                   " voxel bytes, found " + std::to_string(left));
   VoxelGeometry g(dims, spacing, origin);
   std::string bytes(g.num_voxels(), '\0');
   in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
@@ -66,8 +108,11 @@ VoxelGeometry load_raw(const std::string& path) {
   for (int k = 0; k < dims[2]; ++k)
     for (int j = 0; j < dims[1]; ++j)
       for (int i = 0; i < dims[0]; ++i) g.set_solid(i, j, k, bytes[g.index(i, j, k)] != 0);
+  check_has_fluid(path, g);
   return g;
 }
+
+namespace {
 
 #ifdef LBM_PORE_HAVE_VTK
 VoxelGeometry load_vti(const std::string& path) {
@@ -78,6 +123,16 @@ VoxelGeometry load_vti(const std::string& path) {
   auto reader = vtkSmartPointer<vtkXMLImageDataReader>::New();
   if (!reader->CanReadFile(path.c_str())) fail(path, "is not a VTK XML image file");
   reader->SetFileName(path.c_str());
+  // The sizes first (the XML header only): VTK allocates the whole array in Update().
+  reader->UpdateInformation();
+  int extent[6] = {0, -1, 0, -1, 0, -1};
+  reader->GetOutputInformation(0)->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent);
+  // VTK's array (up to 8 bytes a value) and the geometry (one byte). An empty or inverted
+  // extent is refused below, by the geometry's own size check.
+  const std::array<int, 3> extent_dims{extent[1] - extent[0] + 1, extent[3] - extent[2] + 1,
+                                       extent[5] - extent[4] + 1};
+  if (extent_dims[0] > 0 && extent_dims[1] > 0 && extent_dims[2] > 0)
+    check_geometry_fits(path, extent_dims, 9.0);
   reader->Update();
   vtkImageData* image = reader->GetOutput();
   int vtk_dims[3];
@@ -108,6 +163,7 @@ VoxelGeometry load_vti(const std::string& path) {
     for (int j = 0; j < dims[1]; ++j)
       for (int i = 0; i < dims[0]; ++i)
         g.set_solid(i, j, k, array->GetComponent(static_cast<vtkIdType>(g.index(i, j, k)), 0) != 0);
+  check_has_fluid(path, g);
   return g;
 }
 #endif
@@ -122,7 +178,9 @@ VoxelGeometry load_voxel_file(const std::string& path) {
     fail(path, ".vti geometry needs VTK; rebuild with libvtk9-dev or use the raw format");
 #endif
   }
-  return load_raw(path);
+  std::ifstream in(path, std::ios::binary);
+  if (!in) fail(path, "cannot be opened");
+  return read_raw_voxels(in, path);
 }
 
 void save_voxel_file_raw(const VoxelGeometry& g, const std::string& path) {

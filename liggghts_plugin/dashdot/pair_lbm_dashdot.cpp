@@ -11,16 +11,17 @@
 
 #include "atom.h"
 #include "comm.h"
+#include "dashdot_arguments.h"
 #include "error.h"
 #include "fix.h"
 #include "force.h"
 #include "group.h"
+#include "lbm/input_error.h"
 #include "memory.h"
 #include "modify.h"
 #include "neigh_list.h"
 #include "neigh_request.h"
 #include "neighbor.h"
-#include "plugin_common/parse_number.h"
 #include "plugin_common/stop_run.h"
 #include "update.h"
 
@@ -60,23 +61,11 @@ void PairLbmDashdot::allocate() {
 void PairLbmDashdot::parse_coefficients(int first, int narg, char** arg,
                                         contact::PairContactParams& params,
                                         const char* command) {
-  using lbm_pore::parse_number;
-  for (int iarg = first; iarg < narg; iarg += 2) {
-    const std::string key = arg[iarg];
-    if (iarg + 1 >= narg)
-      error->all(FLERR, (std::string(command) + ": keyword '" + key + "' needs a value").c_str());
-    const char* value = arg[iarg + 1];
-    if (key == "kn") {
-      params.normal.k_n = parse_number(error, command, "kn", value, 0.0, false, 1e300);
-    } else if (key == "kc") {
-      params.cohesion.k_c = parse_number(error, command, "kc", value, 0.0, true, 1e300);
-    } else if (key == "damping") {
-      params.normal.damping_ratio = parse_number(error, command, "damping", value, 0.0, true, 1.0);
-    } else {
-      error->all(FLERR, (std::string(command) + ": unknown keyword '" + key +
-                         "' (expected kn, kc or damping)")
-                            .c_str());
-    }
+  try {
+    lbm_pore::parse_dashdot_coefficients(std::vector<std::string>(arg + first, arg + narg), params,
+                                         command);
+  } catch (const lbm::InputError& e) {
+    error->all(FLERR, e.what());
   }
 }
 

@@ -25,6 +25,7 @@
 #include "modify.h"
 #include "neigh_list.h"
 #include "neigh_request.h"
+#include "plugin_common/entry_guard.h"
 #include "plugin_common/stop_run.h"
 #include "pore_scene_setup.h"
 #include "neighbor.h"
@@ -40,12 +41,16 @@ std::string fix_message(const std::string& what) {
 }  // namespace
 
 FixLbmPore::FixLbmPore(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg, arg) {
+  lbm_pore::refuse_second_instance(modify, error, this);
   std::vector<std::string> words(arg + 3, arg + narg);
   try {
     options_ = lbm_pore::parse_pore_options(words);
+    lbm_pore::check_output_paths(options_);
     build_geometry();
   } catch (const lbm::InputError& e) {
     error->all(FLERR, fix_message(e.what()).c_str());
+  } catch (...) {  // std::bad_alloc and the like, as a LIGGGHTS error
+    lbm_pore::report_current_exception(error, "fix lbm/pore", lbm_pore::ErrorScope::kAllRanks);
   }
   if (!atom->radius_flag)
     error->all(FLERR, "fix lbm/pore needs per-atom radii: use atom_style granular (or sphere)");
@@ -92,6 +97,8 @@ void FixLbmPore::init() {
     lbm_pore::check_neighbor_skin(options_, neighbor->skin);
   } catch (const lbm::InputError& e) {
     error->all(FLERR, fix_message(e.what()).c_str());
+  } catch (...) {
+    lbm_pore::report_current_exception(error, "fix lbm/pore", lbm_pore::ErrorScope::kAllRanks);
   }
   if (!resume_checkpoint_.empty()) {
     try {
@@ -161,8 +168,11 @@ void FixLbmPore::build_lattice() {
   const lbm::FluidParameters p = lbm_pore::fluid_parameters(options_, *units_);
   const lbm::FlowDrive drive = lbm_pore::drive_of(options_, *units_);
   const coupling::SubdomainGrid grid{domain->sublo, domain->subhi, comm->myloc, comm->procgrid, comm->procneigh};
-  solver_ = std::make_unique<lbm::FluidSolver>(
-      *geometry_, p, drive, coupling::subdomain_decomposition(*frame_, grid, p.periodic, lbm::Communicator(world), comm->me));
+  const lbm::Decomposition decomposition =
+      coupling::subdomain_decomposition(*frame_, grid, p.periodic, lbm::Communicator(world), comm->me);
+  // Collective: every rank refuses together a lattice that does not fit (size and memory named).
+  lbm_pore::check_lattice_memory(options_, decomposition.owned, geometry_->dims(), lbm::Communicator(world));
+  solver_ = std::make_unique<lbm::FluidSolver>(*geometry_, p, drive, decomposition);
 
   coupling::SphereCouplingOptions co;
   co.wall_scheme = lbm::moving_wall::parse(options_.boundary);

@@ -2,9 +2,11 @@
 
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
+#include <optional>
+#include <set>
 
 #include "lbm/input_error.h"
+#include "plugin_common/number_text.h"
 
 namespace lbm_pore {
 
@@ -26,22 +28,19 @@ class Words {
   }
   double number(const std::string& keyword, double lo, double hi, bool lo_open = true) {
     const std::string word = text(keyword);
-    char* end = nullptr;
-    const double v = std::strtod(word.c_str(), &end);
-    const bool in_range = (lo_open ? v > lo : v >= lo) && v <= hi;
-    if (end == word.c_str() || *end != '\0' || !std::isfinite(v) || !in_range)
+    const std::optional<double> v = read_decimal(word);  // plain decimal: no hex, inf, nan
+    if (!v || !(lo_open ? *v > lo : *v >= lo) || *v > hi)
       fail("keyword '" + keyword + "' = '" + word + "': must be a number in " +
-           (lo_open ? "(" : "[") + format(lo) + ", " + format(hi) + "]");
-    return v;
+           interval_text(lo, !lo_open, hi));
+    return *v;
   }
   int integer(const std::string& keyword, int lo, int hi) {
     const std::string word = text(keyword);
-    char* end = nullptr;
-    const long v = std::strtol(word.c_str(), &end, 10);
-    if (end == word.c_str() || *end != '\0' || v < lo || v > hi)
+    const std::optional<int> v = read_decimal_integer(word);
+    if (!v || *v < lo || *v > hi)
       fail("keyword '" + keyword + "' = '" + word + "': must be an integer in [" +
            std::to_string(lo) + ", " + std::to_string(hi) + "]");
-    return static_cast<int>(v);
+    return *v;
   }
   bool yes_no(const std::string& keyword) {
     const std::string word = text(keyword);
@@ -50,15 +49,20 @@ class Words {
     fail("keyword '" + keyword + "' = '" + word + "': must be yes or no");
   }
   static std::string format(double v) {
-    if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
     char text[32];
     std::snprintf(text, sizeof text, "%g", v);
     return text;
+  }
+  // Each keyword once: a repeated one used to win silently over the first.
+  void require_first_use(const std::string& keyword) {
+    if (!seen_.insert(keyword).second)
+      throw lbm::InputError(duplicate_keyword_message("fix lbm/pore", keyword));
   }
 
  private:
   const std::vector<std::string>& w_;
   std::size_t i_ = 0;
+  std::set<std::string> seen_;
 };
 
 constexpr double kInf = HUGE_VAL;
@@ -87,6 +91,21 @@ void parse_pore_scene(Words& words, PoreOptions& o) {
          ": must be <= width = " + Words::format(o.width) + " (the pore must fit in the box)");
 }
 
+// The flow runs along +x, from the inlet at x-lo (where particles are inserted) to the outlet
+// at x-hi (where they are removed): a negative drive would reverse it and turn the scene's
+// regions round, so it is refused. 0 is valid: a closed box without drive (e.g. a settling
+// sphere); fix_lbm_pore.txt says what the outputs then are.
+double non_negative_drive(Words& words, const std::string& key) {
+  const double value = words.number(key, -kInf, kInf);
+  if (value < 0.0)
+    fail("keyword '" + key + "' = '" + Words::format(value) +
+         "': must be a number in [0, inf]: the flow runs "
+         "along +x, from the inlet at x-lo to the outlet at x-hi; for the opposite direction "
+         "mirror the scene "
+         "(0 = a closed box without drive)");
+  return value;
+}
+
 }  // namespace
 
 PoreOptions parse_pore_options(const std::vector<std::string>& args) {
@@ -95,6 +114,7 @@ PoreOptions parse_pore_options(const std::vector<std::string>& args) {
   bool drive_given = false;
   while (!words.done()) {
     const std::string key = words.next_keyword();
+    words.require_first_use(key);
     if (key == "dx") {
       o.dx = words.number(key, 0.0, kInf);
     } else if (key == "rho") {
@@ -128,13 +148,13 @@ PoreOptions parse_pore_options(const std::vector<std::string>& args) {
       if (drive_given && o.drive != PoreOptions::Drive::kVelocity)
         fail("keywords 'velocity' and 'pressure_loss' exclude each other: give one drive");
       o.drive = PoreOptions::Drive::kVelocity;
-      o.drive_value = words.number(key, -kInf, kInf);
+      o.drive_value = non_negative_drive(words, key);
       drive_given = true;
     } else if (key == "pressure_loss") {
       if (drive_given && o.drive != PoreOptions::Drive::kPressureLoss)
         fail("keywords 'velocity' and 'pressure_loss' exclude each other: give one drive");
       o.drive = PoreOptions::Drive::kPressureLoss;
-      o.drive_value = words.number(key, -kInf, kInf);
+      o.drive_value = non_negative_drive(words, key);
       drive_given = true;
     } else if (key == "boundary") {
       o.boundary = words.text(key);

@@ -1,11 +1,19 @@
 #include "pore_scene_setup.h"
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
 #include <string>
+#include <utility>
 
 #include "lbm/input_error.h"
+#include "lbm/memory_estimate.h"
 #include "lbm/pore_scene.h"
 #include "lbm/stability.h"
 #include "lbm/voxel_file.h"
@@ -13,11 +21,66 @@
 namespace lbm_pore {
 
 namespace {
+// Nodes along one axis are ints (lbm::BlockLayout); more than this cannot be a lattice anyway.
+constexpr double kMaxCellsPerAxis = 1 << 30;
+
 int cells(double length, double dx) { return static_cast<int>(std::lround(length / dx)); }
+
+std::string format(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", v);
+  return text;
+}
+
+// Before any voxel is allocated: the scene's lengths in cells must be ints, and its geometry
+// (one byte a node, held by the fix and by the fluid solver on every rank) must fit in memory.
+void check_scene_size(const PoreOptions& o) {
+  const double dx = o.dx;
+  const double length_cells = std::round(o.inlet_length / dx) + std::round(o.free_length / dx) +
+                              std::round(o.pore_length / dx) + std::round(o.outlet_length / dx);
+  const double width_cells = std::round(o.width / dx);
+  const std::string lattice = "scene pore: with dx = " + format(dx) + " the lattice has " +
+                              format(length_cells) + " x " + format(width_cells) + " x " +
+                              format(width_cells) + " nodes";
+  const std::string hint = "raise dx or shorten the scene";
+  if (length_cells > kMaxCellsPerAxis || width_cells > kMaxCellsPerAxis)
+    throw lbm::InputError(lattice + ", more than 2^30 along an axis; " + hint);
+  lbm::check_fits_in_memory(
+      2.0 * lbm::geometry_bytes({int(length_cells), int(width_cells), int(width_cells)}),
+      lattice + ", whose geometry (a byte per node, twice on every rank)", hint);
+}
+
+// The nearest folder of `path` that exists (itself, or its folder for a file, or an ancestor)
+// must be a folder this process can create files in: a file of the same name, or a folder that
+// refuses writing, would stop the run later, at the first output, after the set-up is paid for.
+void check_writable_location(const std::string& keyword, const std::filesystem::path& path,
+                             bool path_is_file) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  fs::path existing = path_is_file ? path.parent_path() : path;
+  if (existing.empty()) existing = ".";
+  while (!fs::exists(existing, ec) && existing.has_parent_path() &&
+         existing != existing.parent_path())
+    existing = existing.parent_path();
+  if (!fs::exists(existing, ec)) existing = ".";  // a relative path whose first folder is new
+  if (!fs::is_directory(existing, ec))
+    throw lbm::InputError(keyword + ": '" + existing.string() +
+                          "' exists and is not a directory (for '" + path.string() +
+                          "'); give another path");
+  // Creating (and removing) a file is the only test that also holds for root and read-only mounts.
+  std::string probe = (existing / ".lbm_pore_write_test_XXXXXX").string();
+  const int fd = mkstemp(probe.data());
+  if (fd < 0)
+    throw lbm::InputError(keyword + ": cannot create files in the directory '" + existing.string() +
+                          "' (for '" + path.string() + "'): " + std::strerror(errno));
+  close(fd);
+  std::remove(probe.c_str());
+}
 }  // namespace
 
 SceneSetup build_scene(const PoreOptions& o, const double* box_lo) {
   const double dx = o.dx;
+  if (o.scene == PoreOptions::Scene::kPore) check_scene_size(o);
   std::array<double, 3> origin;
   for (int a = 0; a < 3; ++a) origin[a] = o.origin_given ? o.origin[a] : box_lo[a] + 0.5 * dx;
   SceneSetup scene;
@@ -41,6 +104,37 @@ SceneSetup build_scene(const PoreOptions& o, const double* box_lo) {
   scene.monitor = coupling::voxel_geometry_monitor(*file);
   scene.geometry = file;
   return scene;
+}
+
+void check_output_paths(const PoreOptions& o) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (o.vtk_every > 0) {
+    if (fs::exists(o.vtk_directory, ec) && !fs::is_directory(o.vtk_directory, ec))
+      throw lbm::InputError("vtk: '" + o.vtk_directory +
+                            "' exists and is not a directory; give a directory");
+    check_writable_location("vtk", o.vtk_directory, false);
+  }
+  for (const auto& [keyword, file] :
+       {std::pair<std::string, std::string>{"checkpoint", o.checkpoint_prefix},
+        std::pair<std::string, std::string>{"burst_file", o.burst_file}}) {
+    if (file.empty()) continue;
+    if (fs::is_directory(file, ec))
+      throw lbm::InputError(keyword + ": '" + file + "' is a directory; give a file name");
+    check_writable_location(keyword, file, true);
+  }
+}
+
+void check_lattice_memory(const PoreOptions& o, const lbm::Box& owned,
+                          const std::array<int, 3>& global, const lbm::Communicator& comm) {
+  const std::string what = "the lattice of " + std::to_string(global[0]) + " x " +
+                           std::to_string(global[1]) + " x " + std::to_string(global[2]) +
+                           " nodes (dx = " + format(o.dx) + "; " + std::to_string(owned.size(0)) +
+                           " x " + std::to_string(owned.size(1)) + " x " +
+                           std::to_string(owned.size(2)) + " on this rank)";
+  lbm::check_fits_in_memory_on_every_machine(
+      lbm::lattice_bytes({owned.size(0), owned.size(1), owned.size(2)}, global), what,
+      "raise dx, shrink the scene or run on more machines", comm);
 }
 
 lbm::FlowDrive drive_of(const PoreOptions& o, const coupling::UnitConversion& units) {
@@ -78,7 +172,8 @@ void check_boundaries(const PoreOptions& o, const int* periodicity) {
 double deposit_speed_threshold(const PoreOptions& o, const coupling::UnitConversion& units,
                                const lbm::FlowDrive& drive) {
   if (o.deposit_speed >= 0.0) return units.velocity_to_lattice(o.deposit_speed);
-  if (drive.kind == lbm::FlowDrive::kInletVelocity)
+  // velocity 0 (a closed box) has no inlet velocity to take a fraction of: the default then.
+  if (drive.kind == lbm::FlowDrive::kInletVelocity && drive.inlet_velocity != 0.0)
     return coupling::kDepositSpeedFraction * std::abs(drive.inlet_velocity);
   return coupling::DepositionCriteria{}.speed_threshold;
 }

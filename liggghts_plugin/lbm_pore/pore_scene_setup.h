@@ -9,6 +9,8 @@
 #include "coupling/diagnostics/pore_monitor.h"
 #include "coupling/lubrication/lubrication_kernel.h"
 #include "coupling/unit_conversion.h"
+#include "lbm/block_layout.h"
+#include "lbm/communicator.h"
 #include "lbm/fluid_solver.h"
 #include "lbm/voxel_geometry.h"
 #include "lbm_pore_options.h"
@@ -21,8 +23,21 @@ struct SceneSetup {
 };
 
 // The paper's scene from its lengths, or a voxel file placed with node 0 at `origin`
-// (default: half a cell inside the box's lower corner). Throws lbm::InputError.
+// (default: half a cell inside the box's lower corner). Throws lbm::InputError, also before
+// allocating a geometry that would not fit in memory (naming dx).
 SceneSetup build_scene(const PoreOptions& options, const double* box_lo);
+
+// The folders of the output paths (vtk, checkpoint, burst_file) exist or can be created and
+// accept files, and none is a file where a directory is needed or the other way round; checked
+// when the fix is defined, not at the first output. Throws lbm::InputError naming the keyword.
+void check_output_paths(const PoreOptions& options);
+
+// Collective: before the fluid solver is built, this rank's block (`owned`, of the `global`
+// lattice) must fit in the memory of its machine together with the blocks of the other ranks
+// there (lbm/memory_estimate.h). Throws lbm::InputError on every rank, naming dx, the lattice's
+// size, the bytes and the memory available.
+void check_lattice_memory(const PoreOptions& options, const lbm::Box& owned,
+                          const std::array<int, 3>& global, const lbm::Communicator& comm);
 
 // The drive along +x in lattice units; throws lbm::InputError naming 'velocity' or
 // 'pressure_loss' when it exceeds the scheme's limits (lbm/stability.h).
@@ -33,7 +48,8 @@ lbm::FlowDrive drive_of(const PoreOptions& options, const coupling::UnitConversi
 void check_boundaries(const PoreOptions& options, const int* periodicity);
 
 // The speed below which a bonded particle counts as deposited (lattice units): the
-// 'deposit_speed' keyword, else a fraction of the inlet velocity, else the default.
+// 'deposit_speed' keyword, else a fraction of the inlet velocity (when it is not 0: a closed
+// box has none), else the default.
 double deposit_speed_threshold(const PoreOptions& options, const coupling::UnitConversion& units,
                                const lbm::FlowDrive& drive);
 

@@ -1,55 +1,32 @@
 #include "parse_number.h"
 
-#include <cerrno>
-#include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <cstring>
 #include <string>
 
 #include "error.h"
+#include "lbm/input_error.h"
+#include "number_text.h"
 
 namespace lbm_pore {
 
-namespace {
-std::string range_text(double min, bool min_inclusive, double max) {
-  char buffer[128];
-  if (max >= 1e300)
-    std::snprintf(buffer, sizeof buffer, "a number %s %g", min_inclusive ? ">=" : ">", min);
-  else
-    std::snprintf(buffer, sizeof buffer, "a number in %s%g, %g]", min_inclusive ? "[" : "(",
-                  min, max);
-  return buffer;
-}
-}  // namespace
-
 double parse_number(LAMMPS_NS::Error* error, const char* command, const char* keyword,
                     const char* text, double min, bool min_inclusive, double max) {
-  char* end = nullptr;
-  errno = 0;
-  const double value = std::strtod(text, &end);
-  const bool parsed = end != text && *end == '\0' && errno == 0 && std::isfinite(value);
-  const bool in_range = parsed && (min_inclusive ? value >= min : value > min) && value <= max;
-  if (!in_range) {
-    const std::string message = std::string(command) + ": " + keyword + " must be " +
-                                range_text(min, min_inclusive, max) + " (got '" + text + "')";
-    error->all(FLERR, message.c_str());
+  try {
+    return number_in_range(command, keyword, text, min, min_inclusive, max);
+  } catch (const lbm::InputError& e) {
+    error->all(FLERR, e.what());
   }
-  return value;
+  return 0.0;  // not reached: error->all does not return
 }
 
 int parse_integer(LAMMPS_NS::Error* error, const char* command, const char* keyword,
                   const char* text, int min, int max) {
-  char* end = nullptr;
-  errno = 0;
-  const long value = std::strtol(text, &end, 10);
-  if (end == text || *end != '\0' || errno != 0 || value < min || value > max) {
-    char message[256];
-    std::snprintf(message, sizeof message, "%s: %s must be an integer in [%d, %d] (got '%s')",
-                  command, keyword, min, max, text);
-    error->all(FLERR, message);
+  try {
+    return integer_in_range(command, keyword, text, min, max);
+  } catch (const lbm::InputError& e) {
+    error->all(FLERR, e.what());
   }
-  return static_cast<int>(value);
+  return 0;  // not reached
 }
 
 int parse_choice(LAMMPS_NS::Error* error, const char* command, const char* keyword,

@@ -1,6 +1,7 @@
 #pragma once
-// Keyword values of our styles: a number in a range or one word of a list, or a LIGGGHTS error
-// naming the command, the keyword and the valid range or words.
+// Keyword values of our styles: a plain decimal number in a range (number_text.h: no hex, inf
+// or nan) or one word of a list, or a LIGGGHTS error naming the command, the keyword and the
+// valid range or words.
 #include <initializer_list>
 
 namespace LAMMPS_NS {

@@ -12,22 +12,19 @@
 #include "atom.h"
 #include "comm.h"
 #include "error.h"
-#include "modify.h"
 #include "lbm/input_error.h"
-#include "plugin_common/stop_run.h"
 #include "lbm_pore/fix_lbm_pore.h"
-#include "plugin_common/parse_number.h"
+#include "modify.h"
+#include "plugin_common/entry_guard.h"
+#include "plugin_common/stop_run.h"
 #include "update.h"
 #include "wall_geometry_source.h"
+#include "wall_voxel_arguments.h"
 
 using namespace LAMMPS_NS;
-using lbm_pore::parse_choice;
-using lbm_pore::parse_integer;
-using lbm_pore::parse_number;
 
 namespace {
 constexpr const char* kCommand = "fix wall/voxel";
-constexpr double kBig = 1e300;
 
 // The words of this style's guard messages, in the order of lbm_pore::GuardWording.
 const lbm_pore::GuardWording kGuardWording{kCommand, "wall contact time", "the lightest particle",
@@ -36,75 +33,19 @@ const lbm_pore::GuardWording kGuardWording{kCommand, "wall contact time", "the l
 
 FixWallVoxel::FixWallVoxel(LAMMPS* lmp, int narg, char** arg)
     : Fix(lmp, narg, arg), guards_(lmp, kGuardWording) {
-  lbm_pore::WallGeometrySource source;
-  std::shared_ptr<const lbm::VoxelGeometry> shared;  // from 'lbm <fix-ID>'
-  int iarg = 3;
-  while (iarg < narg) {
-    const std::string key = arg[iarg];
-    auto need = [&](int count) {
-      if (iarg + count >= narg)
-        error->all(FLERR, (std::string(kCommand) + ": keyword '" + key + "' needs " +
-                           std::to_string(count) + " value(s)")
-                              .c_str());
-    };
-    if (key == "lbm") {
-      need(1);
-      shared = geometry_of_lbm_fix(arg[iarg + 1]);
-      iarg += 2;
-    } else if (key == "file") {
-      need(1);
-      source.kind = lbm_pore::WallGeometrySource::Kind::kFile;
-      source.path = arg[iarg + 1];
-      iarg += 2;
-    } else if (key == "pore") {
-      source.kind = lbm_pore::WallGeometrySource::Kind::kPoreScene;
-      iarg += 1;
-    } else if (key == "model") {
-      need(1);
-      model_kind_ = parse_choice(error, kCommand, "model", arg[iarg + 1], {"smooth", "voxel_sum"}) == 1
-                        ? lbm_pore::WallModelKind::kVoxelSum
-                        : lbm_pore::WallModelKind::kSmooth;
-      iarg += 2;
-    } else if (key == "inlet_length" || key == "free_length" || key == "pore_length" ||
-               key == "outlet_length" || key == "width") {
-      need(1);
-      const int value = parse_integer(error, kCommand, key.c_str(), arg[iarg + 1], 1, 1 << 20);
-      if (key == "inlet_length") source.pore.inlet_length = value;
-      if (key == "free_length") source.pore.free_length = value;
-      if (key == "pore_length") source.pore.pore_length = value;
-      if (key == "outlet_length") source.pore.outlet_length = value;
-      if (key == "width") source.pore.width = value;
-      iarg += 2;
-    } else if (key == "pore_diameter") {
-      need(1);
-      source.pore.pore_diameter = parse_number(error, kCommand, "pore_diameter", arg[iarg + 1], 0.0, false, kBig);
-      iarg += 2;
-    } else if (key == "spacing") {
-      need(1);
-      source.spacing = parse_number(error, kCommand, "spacing", arg[iarg + 1], 0.0, false, kBig);
-      iarg += 2;
-    } else if (key == "origin") {
-      need(3);
-      for (int a = 0; a < 3; ++a)
-        source.origin[a] = parse_number(error, kCommand, "origin", arg[iarg + 1 + a], -kBig, true, kBig);
-      iarg += 4;
-    } else {
-      parse_contact_keyword(iarg, narg, arg);
-    }
-  }
-  if (shared && source.kind != lbm_pore::WallGeometrySource::Kind::kNone)
-    error->all(FLERR, "fix wall/voxel: give one geometry: 'lbm <fix-ID>', 'file <path>' or 'pore'");
-  if (!shared && source.kind == lbm_pore::WallGeometrySource::Kind::kNone)
-    error->all(FLERR, "fix wall/voxel: no geometry: give keyword 'lbm <fix-ID>' (the geometry of "
-                      "fix lbm/pore), 'file <path>' or 'pore'");
-  // Defaults tied to the wall stiffness and damping unless given.
-  if (!kt_given_) params_.friction.k_t = contact::default_tangential_stiffness(params_.normal.k_n);
-  if (!tangential_damping_given_) params_.friction.damping_ratio = params_.normal.damping_ratio;
-
+  lbm_pore::WallVoxelArguments args;
   try {
-    use_geometry(shared ? shared : lbm_pore::acquire_wall_geometry(source));
+    args = lbm_pore::parse_wall_voxel_arguments(std::vector<std::string>(arg + 3, arg + narg));
   } catch (const lbm::InputError& e) {
-    error->all(FLERR, (std::string(kCommand) + ": " + e.what()).c_str());
+    error->all(FLERR, e.what());
+  }
+  params_ = args.params;
+  model_kind_ = args.voxel_sum ? lbm_pore::WallModelKind::kVoxelSum : lbm_pore::WallModelKind::kSmooth;
+  try {
+    use_geometry(args.lbm_fix_id.empty() ? lbm_pore::acquire_wall_geometry(args.source)
+                                         : geometry_of_lbm_fix(args.lbm_fix_id.c_str()));
+  } catch (...) {  // lbm::InputError naming the file or keyword; std::bad_alloc as a last resort
+    lbm_pore::report_current_exception(error, kCommand, lbm_pore::ErrorScope::kAllRanks);
   }
 
   vector_flag = 1;
@@ -119,36 +60,6 @@ FixWallVoxel::FixWallVoxel(LAMMPS* lmp, int narg, char** arg)
   atom->add_callback(1);  // restart
   // Each migrating atom carries its springs (257 doubles for voxel_sum).
   comm->maxexchange_fix += model_->packed_size();
-}
-
-void FixWallVoxel::parse_contact_keyword(int& iarg, int narg, char** arg) {
-  const std::string key = arg[iarg];
-  if (iarg + 1 >= narg)
-    error->all(FLERR, (std::string(kCommand) + ": keyword '" + key + "' needs a value").c_str());
-  const char* value = arg[iarg + 1];
-  if (key == "kw") {
-    params_.normal.k_n = parse_number(error, kCommand, "kw", value, 0.0, false, kBig);
-  } else if (key == "ka") {
-    params_.adhesion.k_a = parse_number(error, kCommand, "ka", value, 0.0, true, kBig);
-  } else if (key == "damping") {
-    params_.normal.damping_ratio = parse_number(error, kCommand, "damping", value, 0.0, true, 1.0);
-  } else if (key == "mu") {
-    params_.friction.mu = parse_number(error, kCommand, "mu", value, 0.0, true, kBig);
-  } else if (key == "kt") {
-    params_.friction.k_t = parse_number(error, kCommand, "kt", value, 0.0, false, kBig);
-    kt_given_ = true;
-  } else if (key == "tangential_damping") {
-    params_.friction.damping_ratio =
-        parse_number(error, kCommand, "tangential_damping", value, 0.0, true, 1.0);
-    tangential_damping_given_ = true;
-  } else {
-    error->all(FLERR, (std::string(kCommand) + ": unknown keyword '" + key +
-                       "' (expected lbm, file, pore, inlet_length, free_length, pore_length, "
-                       "outlet_length, width, pore_diameter, spacing, origin, model, kw, ka, "
-                       "damping, mu, kt or tangential_damping)")
-                          .c_str());
-  }
-  iarg += 2;
 }
 
 FixWallVoxel::~FixWallVoxel() {

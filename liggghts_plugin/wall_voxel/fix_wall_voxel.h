@@ -60,7 +60,6 @@ class FixWallVoxel : public Fix {
   void use_geometry(std::shared_ptr<const lbm::VoxelGeometry> geometry);
 
  private:
-  void parse_contact_keyword(int& iarg, int narg, char** arg);
   std::shared_ptr<const lbm::VoxelGeometry> geometry_of_lbm_fix(const char* fix_id);
   // Collective: recomputes the limit from the lightest particle in the group; error->all above it.
   void check_time_step();
@@ -70,7 +69,6 @@ class FixWallVoxel : public Fix {
   lbm_pore::WallModelKind model_kind_ = lbm_pore::WallModelKind::kSmooth;
   std::unique_ptr<lbm_pore::WallModel> model_;
   contact::WallContactParams params_;
-  bool kt_given_ = false, tangential_damping_given_ = false;
   double local_stats_[5] = {0, 0, 0, 0, 0};   // contacts, force (3), largest overlap/R
   double global_stats_[5] = {0, 0, 0, 0, 0};
   double local_springs_dropped_ = 0.0;         // since the fix was defined, this rank

@@ -83,3 +83,25 @@ TEST(PoreMonitor, DepositsAndCrossingsInHostUnits) {
   resumed.restore(monitor.state());
   EXPECT_EQ(resumed.values(), monitor.values());
 }
+
+// A closed box (velocity 0, solid end layers): the pore is the narrowest section with fluid,
+// and a geometry without one gives L_dep = 0, not 0/0.
+TEST(PoreMonitor, ClosedBoxGivesAFinitePoreDiameterAndDepositLength) {
+  lbm::VoxelGeometry box({6, 4, 4});
+  for (int k = 0; k < 4; ++k)
+    for (int j = 0; j < 4; ++j) {
+      box.set_solid(0, j, k, true);
+      box.set_solid(5, j, k, true);
+    }
+  PoreMonitorSetup setup = voxel_geometry_monitor(box);
+  EXPECT_DOUBLE_EQ(setup.pore_diameter, std::sqrt(4.0 * 16.0 / M_PI));  // was 0 (the end layer)
+  setup.pore_diameter = 0.0;  // as for a geometry with no open section
+  UnitInputs in;
+  const UnitConversion units(in);
+  PoreMonitor monitor(setup, units);
+  ParticleSet set;
+  set.add(1, {2.5, 1.5, 1.5}, {0, 0, 0}, 1.0);
+  monitor.record_particles(set.view(), {1}, 0.0, lbm::Communicator());
+  EXPECT_EQ(monitor.values()[PoreMonitor::kDepositedLength], 0.0);
+  for (double v : monitor.values()) EXPECT_TRUE(std::isfinite(v));
+}

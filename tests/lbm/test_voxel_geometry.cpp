@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <sstream>
 
 #include "lbm/input_error.h"
 #include "lbm/pore_scene.h"
@@ -87,4 +88,64 @@ TEST(VoxelFile, BadFilesGiveClearErrors) {
   const std::string bad_spacing = temp_path("bad_spacing.voxels");
   std::ofstream(bad_spacing) << "LBMPORE_VOXELS 1\n2 2 2\n0 0 0 0\n";
   EXPECT_NE(error_of(bad_spacing).find("spacing"), std::string::npos);
+}
+
+namespace {
+// A string literal with its NUL bytes.
+template <std::size_t N>
+std::string bytes(const char (&text)[N]) {
+  return std::string(text, N - 1);
+}
+
+std::string raw_error(const std::string& text) {
+  std::istringstream in(text);
+  try {
+    lbm::read_raw_voxels(in, "mem.raw");
+  } catch (const lbm::InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+}  // namespace
+
+TEST(VoxelFile, HugeHeaderSizesAreRefusedBeforeAllocatingWithBothFigures) {
+  // 1e15 voxels: std::string(1e15) used to end in std::bad_alloc ("terminate called").
+  const std::string e = raw_error("LBMPORE_VOXELS 1\n100000 100000 100000\n1 0 0 0\n");
+  EXPECT_NE(e.find("voxel file 'mem.raw': a geometry of 100000 x 100000 x 100000 voxels (its "
+                   "sizes) needs 909 TiB, "
+                   "more than the "),
+            std::string::npos)
+      << e;
+  EXPECT_NE(e.find("of memory available"), std::string::npos) << e;
+  // Sizes that fit but whose bytes are not there: truncated, found before allocating.
+  EXPECT_NE(raw_error("LBMPORE_VOXELS 1\n1000 1000 100\n1 0 0 0\nab")
+                .find("truncated: expected 100000000 voxel "
+                      "bytes, found 2"),
+            std::string::npos);
+  // The same without the newline ending the header (the stream then ends there; tests/fuzz found
+  // it).
+  EXPECT_NE(raw_error("LBMPORE_VOXELS 1\n1000 1000 100\n1 0 0 0")
+                .find("truncated: expected 100000000 voxel bytes, "
+                      "found 0"),
+            std::string::npos);
+}
+
+TEST(VoxelFile, AllSolidIsRefusedSayingThereIsNoFluid) {
+  EXPECT_NE(raw_error(bytes("LBMPORE_VOXELS 1\n2 1 1\n1 0 0 0\n\x01\x02"))
+                .find("is all solid: there is no fluid"),
+            std::string::npos);
+  EXPECT_EQ(raw_error(bytes("LBMPORE_VOXELS 1\n2 1 1\n1 0 0 0\n\x01\x00")), "");
+}
+
+TEST(VoxelFile, HeaderLinesMustHoldExactlyTheirWords) {
+  EXPECT_NE(raw_error("LBMPORE_VOXELS 1\n2 1 1 7\n1 0 0 0\n\x01").find("second line"),
+            std::string::npos);
+  EXPECT_NE(raw_error("LBMPORE_VOXELS 1\n2 1 1\n0x10 0 0 0\n\x01").find("third line"),
+            std::string::npos);
+  EXPECT_NE(raw_error("LBMPORE_VOXELS 1\n2 1 1\n1 nan 0 0\n\x01").find("third line"),
+            std::string::npos);
+  EXPECT_NE(raw_error("LBMPORE_VOXELS 1 extra\n2 1 1\n1 0 0 0\n").find("first line"),
+            std::string::npos);
+  // Windows line ends stay valid.
+  EXPECT_EQ(raw_error(bytes("LBMPORE_VOXELS 1\r\n2 1 1\r\n1 0 0 0\r\n\x00\x01")), "");
 }

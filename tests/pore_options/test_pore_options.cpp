@@ -4,14 +4,9 @@
 
 #include "lbm/input_error.h"
 #include "lbm_pore_options.h"
+#include "split_words.h"
 
 namespace {
-std::vector<std::string> split(const std::string& line) {
-  std::istringstream in(line);
-  std::vector<std::string> words;
-  for (std::string w; in >> w;) words.push_back(w);
-  return words;
-}
 std::string error_of(const std::string& line) {
   try {
     lbm_pore::parse_pore_options(split(line));
@@ -75,4 +70,39 @@ TEST(PoreOptions, BadValuesNameTheKeywordAndRange) {
   // Two drives used to be accepted silently, the last one winning.
   EXPECT_NE(error_of("dx 1" + kScene + " pressure_loss 0.01").find("exclude each other"),
             std::string::npos);
+}
+
+TEST(PoreOptions, EveryKeywordAtMostOnce) {
+  // The last one used to win silently.
+  for (const char* twice : {"dx 1 dx 2", "dx 1 nu 0.1 nu 0.2", "dx 1 vtk 10 a vtk 20 b",
+                            "dx 1 boundary mls boundary mls", "dx 1 lateral wall lateral periodic"})
+    EXPECT_NE(error_of(twice + kScene).find("is given twice; give it once"), std::string::npos)
+        << twice;
+  EXPECT_EQ(error_of("dx 1" + kScene + " velocity 0.02"),
+            "fix lbm/pore: keyword 'velocity' is given twice; give it once");
+  EXPECT_NE(error_of("dx 1" + kScene + " scene voxels a.raw").find("'scene' is given twice"),
+            std::string::npos);
+}
+
+TEST(PoreOptions, HexInfAndNanAreRefusedNamingTheirKeyword) {
+  // std::strtod reads "0x10" as 16, which then failed later naming another keyword.
+  EXPECT_EQ(error_of("dx 0x10" + kScene),
+            "fix lbm/pore: keyword 'dx' = '0x10': must be a number in (0, inf]");
+  EXPECT_NE(error_of("dx 1 nu inf" + kScene).find("'nu' = 'inf'"), std::string::npos);
+  EXPECT_NE(error_of("dx 1 rho nan" + kScene).find("'rho' = 'nan'"), std::string::npos);
+  EXPECT_NE(error_of("dx 1 n_dem 0x10" + kScene).find("'n_dem' = '0x10'"), std::string::npos);
+  EXPECT_NE(
+      error_of("dx 1 scene pore inlet 0x3 free 2 length 4 outlet 3 width 5 diameter 3 velocity 0")
+          .find("'scene pore inlet' = '0x3'"),
+      std::string::npos);
+}
+
+TEST(PoreOptions, NegativeDrivesAreRefusedAndZeroIsAClosedBox) {
+  const std::string scene = "dx 1 scene pore inlet 3 free 2 length 4 outlet 3 width 5 diameter 3.5";
+  EXPECT_NE(error_of(scene + " velocity -0.01")
+                .find("'velocity' = '-0.01': must be a number in [0, inf]"),
+            std::string::npos);
+  EXPECT_NE(error_of(scene + " pressure_loss -1").find("'pressure_loss' = '-1'"),
+            std::string::npos);
+  EXPECT_EQ(lbm_pore::parse_pore_options(split(scene + " velocity 0")).drive_value, 0.0);
 }

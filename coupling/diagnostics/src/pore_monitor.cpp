@@ -55,9 +55,10 @@ void PoreMonitor::record_particles(const ParticleView& view, const std::vector<c
   auto& v = values_;
   v[kDepositedVolume] = deposit.volume * volume_unit;
   v[kDepositedCount] = double(deposit.count);
-  // L_dep = V_dep / (pi D^2 / 4) with the pore's diameter (the equivalent one for a voxel file).
+  // L_dep = V_dep / (pi D^2 / 4) with the pore's diameter (the equivalent one for a voxel file);
+  // 0 for a geometry without an open section (no pore, no deposit length; not 0/0 = NaN).
   const double D = setup_.pore_diameter;
-  v[kDepositedLength] = deposit.volume / (M_PI * D * D / 4.0) * dx;
+  v[kDepositedLength] = D > 0.0 ? deposit.volume / (M_PI * D * D / 4.0) * dx : 0.0;
   const auto in = inlet_counter_.update(view, setup_.flow_length, comm);
   const auto out = outlet_counter_.update(view, setup_.flow_length, comm);
   v[kParticlesIn] += double(in.count);

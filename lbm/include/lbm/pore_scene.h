@@ -27,7 +27,9 @@ struct PoreSceneRegions {
 void validate(const PoreSceneSpec& spec);
 PoreSceneRegions regions_of(const PoreSceneSpec& spec);
 // The pore of an arbitrary geometry along x: its narrowest open cross-section, as the
-// diameter of the circle of equal area, sqrt(4 A / pi) (cells).
+// diameter of the circle of equal area, sqrt(4 A / pi) (cells). Sections without fluid (the
+// solid end layers of a closed box) are walls, not the pore, and are skipped; 0 when every
+// section is solid.
 double narrowest_section_diameter(const VoxelGeometry& geometry);
 VoxelGeometry make_pore_scene(const PoreSceneSpec& spec, double spacing = 1.0,
                               std::array<double, 3> origin = {0.0, 0.0, 0.0});
