@@ -2,7 +2,7 @@
 
 #include "lbm/d3q19.h"
 #include "lbm/node_type.h"
-#include "streaming_store.h"
+#include "lbm/streaming_store.h"
 
 namespace lbm {
 
