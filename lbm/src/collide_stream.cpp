@@ -2,6 +2,7 @@
 
 #include "lbm/d3q19.h"
 #include "lbm/node_type.h"
+#include "lbm/streaming_store.h"
 
 namespace lbm {
 
@@ -23,8 +24,10 @@ using L = D3Q19;
 
 // Rows are processed in chunks of kChunk nodes: the pulled populations are first copied
 // into a small L1-resident SoA buffer (19 contiguous streams), then collided in place and
-// written out. Splitting the gather from the arithmetic lets the compiler vectorise both
-// loops with plain unit-stride loads and stores.
+// written out with streaming stores (no write-allocate: 2 x 19 values moved per update, not
+// 3 x 19). Splitting the gather from the arithmetic lets the compiler vectorise the
+// arithmetic across the chunk's nodes: it reads the node types as a double mask, since
+// GCC does not vectorise a loop that mixes byte and double lanes.
 constexpr int kChunk = 64;
 // The q loops carry "GCC unroll 19": GCC peels at most 16 iterations by default, and only a
 // fully unrolled loop turns the velocity components into constants (a 2.5x speed-up).
@@ -39,24 +42,27 @@ void collide_stream_row(const Real* __restrict src, Real* __restrict dst,
   const double source_even = 1.0 - 0.5 * omega_plus;
   const double source_odd = 1.0 - 0.5 * omega_minus;
   alignas(64) double f[L::Q][kChunk];
+  alignas(64) double fluid_mask[kChunk];
   for (int start = 0; start < length; start += kChunk) {
     const int m = length - start < kChunk ? length - start : kChunk;
     const std::size_t first = base + start;
+    const Real* pull[L::Q];
     #pragma GCC unroll 19
-    for (int q = 0; q < L::Q; ++q) {
-      const Real* __restrict from = src + q * n + first - off[q];
-      for (int i = 0; i < m; ++i) f[q][i] = from[i];
-    }
+    for (int q = 0; q < L::Q; ++q) pull[q] = src + q * n + first - off[q];
+    for (int i = 0; i < m; ++i) fluid_mask[i] = type[first + i] == kFluid ? 1.0 : 0.0;
 #pragma omp simd
     for (int i = 0; i < m; ++i) {
-      const double fluid = type[first + i] == kFluid ? 1.0 : 0.0;
+      const double fluid = fluid_mask[i];
+      double fin[L::Q];
+      #pragma GCC unroll 19
+      for (int q = 0; q < L::Q; ++q) fin[q] = pull[q][i];
       double rho = 0.0, jx = 0.0, jy = 0.0, jz = 0.0;
       #pragma GCC unroll 19
       for (int q = 0; q < L::Q; ++q) {
-        rho += f[q][i];
-        jx += f[q][i] * L::c[q][0];
-        jy += f[q][i] * L::c[q][1];
-        jz += f[q][i] * L::c[q][2];
+        rho += fin[q];
+        jx += fin[q] * L::c[q][0];
+        jy += fin[q] * L::c[q][1];
+        jz += fin[q] * L::c[q][2];
       }
       // Non-fluid nodes are computed on a harmless state (rho = 1, u = 0) and zeroed
       // below, so the loop needs no branch.
@@ -73,7 +79,7 @@ void collide_stream_row(const Real* __restrict src, Real* __restrict dst,
       {  // Rest population: purely even.
         const double feq =
             kIncompressible ? L::w[0] * (rho - rho0 * uu) : L::w[0] * rho * (1.0 - uu);
-        double out = f[0][i] - omega_plus * (f[0][i] - feq);
+        double out = fin[0] - omega_plus * (fin[0] - feq);
         if (kForce) out += source_even * L::w[0] * (-3.0 * uf);
         f[0][i] = fluid * out;
       }
@@ -85,7 +91,7 @@ void collide_stream_row(const Real* __restrict src, Real* __restrict dst,
         const double eq_plus = kIncompressible ? w * (rho + rho0 * (4.5 * cu * cu - uu))
                                                : w * rho * (1.0 + 4.5 * cu * cu - uu);
         const double eq_minus = w * (kIncompressible ? rho0 : rho) * 3.0 * cu;
-        const double a = f[q][i], b = f[q + 1][i];
+        const double a = fin[q], b = fin[q + 1];
         const double relax_plus = omega_plus * (0.5 * (a + b) - eq_plus);
         const double relax_minus = omega_minus * (0.5 * (a - b) - eq_minus);
         double source_plus = 0.0, source_minus = 0.0;
@@ -99,10 +105,7 @@ void collide_stream_row(const Real* __restrict src, Real* __restrict dst,
       }
     }
     #pragma GCC unroll 19
-    for (int q = 0; q < L::Q; ++q) {
-      Real* __restrict to = dst + q * n + first;
-      for (int i = 0; i < m; ++i) to[i] = static_cast<Real>(f[q][i]);
-    }
+    for (int q = 0; q < L::Q; ++q) detail::streaming_store(dst + q * n + first, f[q], m);
   }
 }
 
@@ -120,13 +123,18 @@ void collide_stream(const CollideStreamArgs& a) {
                        ? (forced ? collide_stream_row<true, true> : collide_stream_row<false, true>)
                        : (forced ? collide_stream_row<true, false> : collide_stream_row<false, false>);
   const int nx = g.size(0), ny = g.size(1), nz = g.size(2);
-#pragma omp parallel for collapse(2) schedule(static)
-  for (int k = 0; k < nz; ++k)
-    for (int j = 0; j < ny; ++j) {
-      const std::size_t base = g.cell(0, j, k);
-      row(a.src, a.dst, a.node_type, n, base, nx, off, a.omega_plus, a.omega_minus, a.force[0],
-          a.force[1], a.force[2], a.rho0);
-    }
+#pragma omp parallel
+  {
+#pragma omp for collapse(2) schedule(static) nowait
+    for (int k = 0; k < nz; ++k)
+      for (int j = 0; j < ny; ++j) {
+        const std::size_t base = g.cell(0, j, k);
+        row(a.src, a.dst, a.node_type, n, base, nx, off, a.omega_plus, a.omega_minus,
+            a.force[0], a.force[1], a.force[2], a.rho0);
+      }
+    // Before the region's closing barrier: every thread's rows are in memory after it.
+    detail::streaming_store_fence();
+  }
 }
 
 }  // namespace lbm

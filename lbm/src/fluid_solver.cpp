@@ -199,6 +199,12 @@ void FluidSolver::step() {
   collide_stream();
 }
 
+double FluidSolver::bytes_per_node() const {
+  const double bytes = double(f_.raw().capacity() + f_next_.raw().capacity()) * sizeof(Real) +
+                       double(node_type_.capacity()) * sizeof(std::uint8_t);
+  return bytes / double(layout_.num_cells());
+}
+
 double FluidSolver::density(std::size_t cell) const {
   double rho = 0.0;
   for (int q = 0; q < D3Q19::Q; ++q) rho += f_.at(q, cell);

@@ -85,6 +85,12 @@ class FluidSolver {
   // Changes the drive between steps (e.g. a pressure ramp).
   void set_drive(const FlowDrive& drive);
 
+  // Memory the solver holds per stored lattice node (owned and ghost): the two population
+  // arrays (current and next) and the node type, from their actual sizes. Storage that grows
+  // with the wall surface (bounce-back link lists, halo buffers) is not in it. 305 bytes in
+  // double precision, 153 in single.
+  double bytes_per_node() const;
+
   // Macroscopic values at a local cell, from the stored post-collision populations:
   // rho = sum f, rho u = sum c f - F/2 (the Guo forcing shift undone).
   double density(std::size_t cell) const;

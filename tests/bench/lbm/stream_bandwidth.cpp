@@ -6,7 +6,9 @@
 #include <chrono>
 #include <vector>
 
-double measure_copy_bandwidth(int threads, std::size_t bytes_per_array) {
+#include "lbm/streaming_store.h"
+
+double measure_copy_bandwidth(int threads, CopyStores stores, std::size_t bytes_per_array) {
   const std::size_t n = bytes_per_array / sizeof(double);
   std::vector<double> a(n), b(n);
   // First touch in parallel so pages sit near the threads that use them.
@@ -18,8 +20,19 @@ double measure_copy_bandwidth(int threads, std::size_t bytes_per_array) {
   double best = 0.0;
   for (int repeat = 0; repeat < 5; ++repeat) {
     const auto start = std::chrono::steady_clock::now();
+    if (stores == CopyStores::kPlain) {
 #pragma omp parallel for num_threads(threads) schedule(static)
-    for (std::size_t i = 0; i < n; ++i) b[i] = a[i];
+      for (std::size_t i = 0; i < n; ++i) b[i] = a[i];
+    } else {
+      constexpr std::size_t kBlock = 1 << 16;  // values per streaming_store call
+#pragma omp parallel num_threads(threads)
+      {
+#pragma omp for schedule(static)
+        for (std::size_t i = 0; i < n; i += kBlock)
+          lbm::detail::streaming_store(b.data() + i, a.data() + i, int(std::min(kBlock, n - i)));
+        lbm::detail::streaming_store_fence();
+      }
+    }
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     best = std::max(best, 2.0 * n * sizeof(double) / seconds);
