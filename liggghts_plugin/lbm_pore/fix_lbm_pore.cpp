@@ -123,7 +123,8 @@ void FixLbmPore::init() {
   if (comm->me == 0)
     lbm_pore::print_to_screen_and_log(screen, logfile,
                                       lbm_pore::setup_summary(options_, *units_, frame_->dims, solver_->drive(),
-                                                              update->dt, monitor_setup_.pore_diameter).c_str());
+                                                              update->dt, monitor_setup_.pore_diameter,
+                                                              solver_->bytes_per_node()).c_str());
 }
 
 void FixLbmPore::init_list(int, NeighList* list) { list_ = list; }

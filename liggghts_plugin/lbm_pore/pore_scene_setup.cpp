@@ -236,7 +236,7 @@ void check_neighbor_skin(const PoreOptions& o, double skin) {
 
 std::string setup_summary(const PoreOptions& o, const coupling::UnitConversion& units,
                           const std::array<int, 3>& dims, const lbm::FlowDrive& drive, double dt_dem,
-                          double pore_diameter) {
+                          double pore_diameter, double bytes_per_node) {
   char text[1500];
   int n = std::snprintf(text, sizeof text,
                         "fix lbm/pore: lattice %d x %d x %d nodes (dx = %g), %s\n"
@@ -250,8 +250,12 @@ std::string setup_summary(const PoreOptions& o, const coupling::UnitConversion& 
     n += std::snprintf(text + n, sizeof text - n,
                        "fix lbm/pore: pressure loss %g = %.4g lattice (density difference %.3g)\n", o.drive_value,
                        drive.pressure_loss, 3.0 * drive.pressure_loss);
-  std::snprintf(text + n, sizeof text - n, "fix lbm/pore: moving walls %s, lubrication %s (cutoff %g cells)\n",
-                o.boundary.c_str(), o.lubrication ? "on" : "off", o.lubrication_cutoff);
+  n += std::snprintf(text + n, sizeof text - n, "fix lbm/pore: moving walls %s, lubrication %s (cutoff %g cells)\n",
+                     o.boundary.c_str(), o.lubrication ? "on" : "off", o.lubrication_cutoff);
+  if (bytes_per_node > 0.0)
+    std::snprintf(text + n, sizeof text - n,
+                  "fix lbm/pore: memory %.0f bytes per lattice node (fluid %.0f, particle coupling %.0f)\n",
+                  bytes_per_node + kCouplingBytesPerNode, bytes_per_node, kCouplingBytesPerNode);
   return text;
 }
 
