@@ -1,6 +1,7 @@
 #include "lbm/checkpoint.h"
 
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 
@@ -50,20 +51,32 @@ void for_owned(const BlockLayout& g, Visit visit) {
 }  // namespace
 
 void write_checkpoint(const FluidSolver& solver, const std::string& path) {
+  // Written to a temporary name and renamed once complete: a run killed while writing (a
+  // batch system's wall-time limit, a full disk) leaves the previous file intact.
   const std::string file = rank_path(solver, path);
-  std::ofstream out(file, std::ios::binary);
-  if (!out) throw InputError("fluid checkpoint '" + file + "': cannot be written");
-  const Header h = header_of(solver);
-  out.write(reinterpret_cast<const char*>(&h), sizeof h);
-  const auto& g = solver.layout();
-  for_owned(g, [&](std::size_t cell) {
-    out.put(static_cast<char>(solver.node_types()[cell]));
-    for (int q = 0; q < D3Q19::Q; ++q) {
-      const Real v = solver.populations().at(q, cell);
-      out.write(reinterpret_cast<const char*>(&v), sizeof v);
+  const std::string partial = file + ".partial";
+  {
+    std::ofstream out(partial, std::ios::binary);
+    if (!out) throw InputError("fluid checkpoint '" + file + "': cannot be written");
+    const Header h = header_of(solver);
+    out.write(reinterpret_cast<const char*>(&h), sizeof h);
+    const auto& g = solver.layout();
+    for_owned(g, [&](std::size_t cell) {
+      out.put(static_cast<char>(solver.node_types()[cell]));
+      for (int q = 0; q < D3Q19::Q; ++q) {
+        const Real v = solver.populations().at(q, cell);
+        out.write(reinterpret_cast<const char*>(&v), sizeof v);
+      }
+    });
+    out.flush();
+    if (!out) {
+      out.close();
+      std::remove(partial.c_str());
+      throw InputError("fluid checkpoint '" + file + "': write failed (disk full?); the previous file is kept");
     }
-  });
-  if (!out) throw InputError("fluid checkpoint '" + file + "': write failed (disk full?)");
+  }
+  if (std::rename(partial.c_str(), file.c_str()) != 0)
+    throw InputError("fluid checkpoint '" + file + "': cannot replace it with the new one (" + partial + ")");
 }
 
 void read_checkpoint(FluidSolver& solver, const std::string& path) {

@@ -30,6 +30,12 @@ TEST(MassConservation, ClosedBoxWithObstaclesAndForcing) {
   EXPECT_NEAR(m1 / m0 - 1.0, 0.0, 1e-12) << "mass " << m0 << " -> " << m1;
 }
 
+#include <unistd.h>
+
+#include <cstdio>
+#include <fstream>
+#include <iterator>
+
 #include "lbm/checkpoint.h"
 
 // A run stopped, checkpointed and resumed continues exactly as an uninterrupted one.
@@ -69,3 +75,36 @@ TEST(Checkpoint, ResumedRunMatchesUninterruptedRun) {
     EXPECT_NE(std::string(e.what()).find("lattice or decomposition differs"), std::string::npos);
   }
 }
+
+// A checkpoint is written to a temporary name and renamed once complete: a write that fails
+// on a full disk (here /dev/full behind the temporary name) leaves the previous checkpoint
+// as it was, reports the failure, and leaves no partial file behind.
+TEST(Checkpoint, AFailedWriteKeepsThePreviousCheckpoint) {
+  lbm::VoxelGeometry g({6, 6, 6});
+  lbm::FluidParameters p;
+  p.periodic = {true, true, true};
+  lbm::FluidSolver solver(g, p, lbm::FlowDrive{}, cases::serial_decomposition(g, p.periodic));
+  const std::string path = ::testing::TempDir() + "kept.checkpoint";
+  const std::string file = path + ".0";
+  lbm::write_checkpoint(solver, path);
+  std::ifstream before_stream(file, std::ios::binary);
+  const std::string before((std::istreambuf_iterator<char>(before_stream)), std::istreambuf_iterator<char>());
+  ASSERT_GT(before.size(), 100u);
+  for (int s = 0; s < 5; ++s) solver.step();
+  std::remove((file + ".partial").c_str());
+  ASSERT_EQ(symlink("/dev/full", (file + ".partial").c_str()), 0);
+  try {
+    lbm::write_checkpoint(solver, path);
+    FAIL() << "a write to a full disk was not reported";
+  } catch (const lbm::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("disk full"), std::string::npos) << e.what();
+  }
+  std::ifstream after_stream(file, std::ios::binary);
+  const std::string after((std::istreambuf_iterator<char>(after_stream)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(after, before);
+  EXPECT_FALSE(std::ifstream(file + ".partial").good());
+  lbm::FluidSolver resumed(g, p, lbm::FlowDrive{}, cases::serial_decomposition(g, p.periodic));
+  lbm::read_checkpoint(resumed, path);
+  EXPECT_EQ(resumed.time_step(), 0);
+}
+
