@@ -22,4 +22,4 @@ cd example_output
 start=$(date +%s)
 mpirun -np "$ranks" "$root/build/liggghts_plugin/liggghts-lbm" -in "$root/examples/pore/in.pore" "$@"
 echo "example: $(( $(date +%s) - start )) s on $ranks rank(s)"
-"$python" "$root/examples/pore/plot_pressure.py" log.liggghts --fix pore --out pressure_loss.png
+"$python" "$root/examples/pore/plot_pressure.py" log.liggghts --fix pore --bursts bursts.txt --out pressure_loss.png

@@ -88,6 +88,24 @@ def find_bursts(steps, pressure, drop, window):
     return bursts
 
 
+def bursts_from_file(path, steps):
+    """(peak, minimum) row indices of the bursts in fix lbm/pore's burst file: the rows nearest
+    to each burst's peak step and to its peak step + Delta t / dt (the file's time is the fluid
+    time, one unit per fluid step of n_dem DEM steps: the minimum's DEM step is estimated from
+    the peak's and the fall's share of the run)."""
+    rows = []
+    with open(path) as burst_file:
+        for line in burst_file:
+            if line.startswith("#") or not line.split():
+                continue
+            words = line.split()
+            peak_step, peak_time, duration = float(words[0]), float(words[1]), float(words[5])
+            after_step = peak_step * (1.0 + duration / peak_time) if peak_time > 0 else peak_step
+            nearest = lambda s: min(range(len(steps)), key=lambda i: abs(steps[i] - s))
+            rows.append((nearest(peak_step), nearest(after_step)))
+    return rows
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("log")
@@ -98,6 +116,10 @@ def main():
                         help="fall, as a fraction of the preceding peak, that counts as a burst")
     parser.add_argument("--window", type=int, default=10,
                         help="thermo rows within which the fall must happen")
+    parser.add_argument("--bursts", default=None,
+                        help="the burst file fix lbm/pore wrote (burst_file): mark its bursts, "
+                             "found every fluid step with the deposit criterion, instead of "
+                             "replaying the rules on the thermo rows")
     args = parser.parse_args()
     header, rows = read_thermo(args.log)
     def find(index):
@@ -113,7 +135,10 @@ def main():
     c = header.index(column)
     steps = [r[0] for r in rows]
     pressure = [r[c] for r in rows]
-    bursts = find_bursts(steps, pressure, args.drop, args.window)
+    if args.bursts:
+        bursts = bursts_from_file(args.bursts, steps)
+    else:
+        bursts = find_bursts(steps, pressure, args.drop, args.window)
     deposit_column = find(6)
     deposits = [r[header.index(deposit_column)] for r in rows] if deposit_column else None
     for peak, after in bursts:

@@ -215,8 +215,9 @@ TEST(BurstFileWriter, HeaderOnceThenOneRowPerBurst) {
   r.deposited_length = 4.0;
   r.count_before = 7;
   r.count_after = 2;
-  { BurstFileWriter(path, units).write(r); }
-  { BurstFileWriter(path, units).write(r); }  // a restarted run appends, no second header
+  { BurstFileWriter(path, units, false).write(r); }  // a stale file of an earlier run
+  { BurstFileWriter(path, units, false).write(r); }  // a fresh run starts the file anew
+  { BurstFileWriter(path, units, true).write(r); }   // a restarted run appends, no second header
   std::ifstream in(path);
   std::stringstream text;
   text << in.rdbuf();
@@ -224,5 +225,5 @@ TEST(BurstFileWriter, HeaderOnceThenOneRowPerBurst) {
             "# step time[fs] P_peak[Pa] P_after[Pa] delta_P[Pa] delta_t[fs] V_dep[um^3] "
             "L_dep[um] count_before count_after\n"
             "42 1.5 2 1 1 0.25 300 4 7 2\n42 1.5 2 1 1 0.25 300 4 7 2\n");
-  EXPECT_THROW(BurstFileWriter("/nonexistent/dir/bursts.txt", units), std::runtime_error);
+  EXPECT_THROW(BurstFileWriter("/nonexistent/dir/bursts.txt", units, false), std::runtime_error);
 }

@@ -172,8 +172,8 @@ std::string BurstFileWriter::header(const BurstUnits& u) {
          u.length + "] count_before count_after\n";
 }
 
-BurstFileWriter::BurstFileWriter(const std::string& path, const BurstUnits& units) {
-  file_ = std::fopen(path.c_str(), "a");
+BurstFileWriter::BurstFileWriter(const std::string& path, const BurstUnits& units, bool append) {
+  file_ = std::fopen(path.c_str(), append ? "a" : "w");
   if (!file_) throw std::runtime_error("cannot open the burst file " + path + " for writing");
   std::fseek(file_, 0, SEEK_END);
   if (std::ftell(file_) == 0) {

@@ -115,8 +115,8 @@ std::optional<BurstRecord> PoreMonitor::record_fluid_step(const lbm::FluidSolver
   return burst;
 }
 
-void PoreMonitor::write_bursts_to(const std::string& path, const BurstUnits& units) {
-  burst_file_ = std::make_unique<BurstFileWriter>(path, units);
+void PoreMonitor::write_bursts_to(const std::string& path, const BurstUnits& units, bool append) {
+  burst_file_ = std::make_unique<BurstFileWriter>(path, units, append);
 }
 
 std::vector<double> PoreMonitor::state() const {

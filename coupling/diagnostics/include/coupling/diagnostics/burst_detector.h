@@ -114,9 +114,10 @@ class BurstDetector {
   double largest_ = 0.0;
 };
 
-// Appends burst records to a text file, one row per burst, under a header line that names
-// the columns and their units (the host's unit names). The header is written only when the
-// file is new or empty, so a restarted run continues the same file. Rank 0 of the host only.
+// Writes burst records to a text file, one row per burst, under a header line that names
+// the columns and their units (the host's unit names). A fresh run starts the file anew; a
+// run resumed from a restart file appends (`append`), and the header is written only when
+// the file is new or empty, so the restarted run continues the same file. Rank 0 only.
 struct BurstUnits {
   std::string time = "time", pressure = "pressure", volume = "volume", length = "length";
 };
@@ -124,7 +125,7 @@ struct BurstUnits {
 class BurstFileWriter {
  public:
   // Throws std::runtime_error naming the file when it cannot be opened.
-  BurstFileWriter(const std::string& path, const BurstUnits& units);
+  BurstFileWriter(const std::string& path, const BurstUnits& units, bool append);
   ~BurstFileWriter();
   BurstFileWriter(const BurstFileWriter&) = delete;
   BurstFileWriter& operator=(const BurstFileWriter&) = delete;

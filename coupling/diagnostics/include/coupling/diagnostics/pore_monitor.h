@@ -87,9 +87,10 @@ class PoreMonitor {
   std::optional<BurstRecord> record_fluid_step(const lbm::FluidSolver& solver, long long fluid_step,
                                                long long step, double time);
   const std::vector<BurstRecord>& bursts() const { return bursts_; }
-  // Rank 0 of a host: append each burst to `path` (header with these unit names). Throws
-  // std::runtime_error naming the file when it cannot be opened.
-  void write_bursts_to(const std::string& path, const BurstUnits& units);
+  // Rank 0 of a host: write each burst to `path` (header with these unit names), appending
+  // to it when the run was resumed from a restart. Throws std::runtime_error naming the file
+  // when it cannot be opened.
+  void write_bursts_to(const std::string& path, const BurstUnits& units, bool append);
 
   const std::vector<double>& values() const { return values_; }
   // Everything a restart needs (the values, with the cumulative fluxes, and the burst
