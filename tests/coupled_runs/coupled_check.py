@@ -4,7 +4,7 @@ compares what it measures with a physical expectation or a reference run. Prints
 with its bound (tests/harness/liggghts_run.py); exits 1 when one fails.
 
 usage: coupled_check.py --driver liggghts-lbm --scripts DIR [--mpirun mpirun] CASE
-CASE: adhesion | clog | clog_pressure | parallel | outputs | restart | bad_arguments
+CASE: adhesion | clog | clog_pressure | parallel | mpi_splits | outputs | restart | bad_arguments
 """
 import math
 import os
@@ -170,6 +170,24 @@ def case_outputs(h):
           "one header line, no burst")
 
 
+def case_mpi_splits(h):
+    """1 rank against 3 (processors 3 1 1) and 4 (2 2 1, 1 2 2; oversubscribed on 2 cores):
+    the two particles of in.transit cross the x splits and particle 2 straddles the y split,
+    so fluid halos, ghost particles and their reverse-communicated loads cross every kind of
+    subdomain face (x, y, z and the edges of the 2 x 2 grids). Same bound as pore_parallel."""
+    variables = {"steps": 100000}
+    serial = thermo_rows(h.run("in.transit", dict(variables, px=1)).output)
+    for px, py, pz in ((3, 1, 1), (2, 2, 1), (1, 2, 2)):
+        split = thermo_rows(h.run("in.transit", dict(variables, px=px, py=py, pz=pz), ranks=px * py * pz).output)
+        check(f"mpi_{px}{py}{pz}_same_rows", len(split) == len(serial) > 5, f"{len(split)} vs {len(serial)}",
+              "same number of thermo rows (> 5)")
+        for column in ("p", "fx", "x1", "y2", "x2"):
+            scale = max(abs(r[column]) for r in serial)
+            worst = max(abs(a[column] - b[column]) for a, b in zip(serial, split)) / scale
+            check(f"mpi_{px}{py}{pz}_max_difference_{column}", worst < 1e-9, f"{worst:.3g}",
+                  "< 1e-9 of its largest value over the run")
+
+
 def case_restart(h):
     """write_restart + read_restart in a second process continue as if never stopped."""
     common = {"clean_steps": 100000, "restart_read": ""}
@@ -244,5 +262,5 @@ def case_bad_arguments(h):
 
 if __name__ == "__main__":
     main({"adhesion": case_adhesion, "clog": case_clog, "clog_pressure": case_clog_pressure,
-          "parallel": case_parallel, "outputs": case_outputs,
+          "parallel": case_parallel, "mpi_splits": case_mpi_splits, "outputs": case_outputs,
           "restart": case_restart, "bad_arguments": case_bad_arguments}, __doc__)
