@@ -18,23 +18,13 @@ import sys
 
 
 def read_thermo(path):
-    """Returns (header, rows) of every thermo block in the log, concatenated."""
-    header, rows = None, []
-    with open(path) as log:
-        for line in log:
-            words = line.split()
-            if words and words[0] == "Step":
-                header = words
-                continue
-            if header is None or len(words) != len(header):
-                continue
-            try:
-                rows.append([float(w) for w in words])
-            except ValueError:
-                header = None if words and words[0].startswith("Loop") else header
-    if header is None or not rows:
+    """Returns (header, rows) of the log's thermo blocks that share the last block's columns
+    (one block per run command), concatenated."""
+    blocks = read_thermo_blocks(path)
+    if not blocks:
         sys.exit(f"{path}: no thermo block with a 'Step' header found")
-    return header, rows
+    header = blocks[-1][0]
+    return header, [row for h, rows in blocks if h == header for row in rows]
 
 
 def read_thermo_blocks(path):

@@ -20,13 +20,16 @@ void mark_cohesive_bonds(const ParticleView& view, const std::vector<ParticlePai
   }
 }
 
-bool within_adhesion_range(double distance, double radius) {
-  return distance <= radius * (1.0 + contact::kAttractionRangeFactor);
-}
+namespace {
+// Centre-to-surface distance within which a particle of radius R adheres (Eq. 4's range).
+double adhesion_reach(double radius) { return radius * (1.0 + contact::kAttractionRangeFactor); }
+}  // namespace
+
+bool within_adhesion_range(double distance, double radius) { return distance <= adhesion_reach(radius); }
 
 bool adheres_to_wall(const contact::VoxelSurface& surface, const Vec3& x, double radius,
                      std::vector<contact::SurfacePoint>& scratch) {
-  surface.find({x[0], x[1], x[2]}, radius * (1.0 + contact::kAttractionRangeFactor), scratch);
+  surface.find({x[0], x[1], x[2]}, adhesion_reach(radius), scratch);
   return !scratch.empty();
 }
 
