@@ -35,9 +35,7 @@ from vtkmodules.vtkIOXML import (vtkXMLImageDataReader, vtkXMLPImageDataReader, 
                                  vtkXMLPolyDataReader)
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from study_io import bursts, thermo  # noqa: E402
-
-N_DEM = 100  # DEM steps per fluid step (in.pore's n_dem)
+from study_io import bursts, lattice_timing, thermo  # noqa: E402
 
 
 def fluid_files(run_dir):
@@ -87,7 +85,8 @@ def pick_times(run_dir, steps):
     columns = thermo(run_dir)
     rows = list(zip(columns.get("Step", []), columns.get("pore[6]", []),
                     columns.get("pore[16]", [])))
-    fluid_step = lambda dem_step: dem_step / N_DEM  # noqa: E731
+    timing = lattice_timing(run_dir)  # the run's own DEM steps per fluid step and fluid step
+    fluid_step = lambda dem_step: dem_step / timing["n_dem"]  # noqa: E731
     nearest = lambda t: min(steps, key=lambda s: abs(s - t))  # noqa: E731
     first_deposit = next((step for step, v_dep, _ in rows if v_dep > 0), None)
     if first_deposit is None:
@@ -98,11 +97,12 @@ def pick_times(run_dir, steps):
     if events:
         largest = max(events, key=lambda b: b["delta_P"])
         peak = nearest(fluid_step(largest["step"]))
-        after_time = fluid_step(largest["step"]) + largest["delta_t"]  # delta_t in fluid steps
+        # delta_t is a time (the script's unit); dt_f of it make one fluid step
+        after_time = fluid_step(largest["step"]) + largest["delta_t"] / timing["dt_f"]
         after = min([s for s in steps if s >= after_time] or [steps[-1]])
         note = f"largest burst: P {largest['P_peak']:.3g} -> {largest['P_after']:.3g} P_out"
     else:
-        top = max(rows, key=lambda r: r[2]) if rows else (steps[-1] * N_DEM, 0, 0)
+        top = max(rows, key=lambda r: r[2]) if rows else (steps[-1] * timing["n_dem"], 0, 0)
         peak, after = nearest(fluid_step(top[0])), steps[-1]
         note = "no burst in this run: (2) at its largest P / P_out, (3) at its end"
     return (before, peak, after), note
@@ -114,12 +114,13 @@ def render(run_dir, out):
         sys.exit(f"{run_dir}: no fluid_vtk/fluid_*.vti (run with vtk_every > 0)")
     steps = sorted(files)
     times, note = pick_times(run_dir, steps)
+    n_dem = lattice_timing(run_dir)["n_dem"]
     fig, axes = plt.subplots(4, 1, figsize=(8, 11), gridspec_kw=dict(height_ratios=[1, 1, 1, 1]))
     speeds = [read_fluid_slice(files[s]) for s in times]
     vmax = max(float(s[0].max()) for s in speeds) or 1.0
     drags = []
     for s in times:
-        path = os.path.join(run_dir, "particles_vtk", f"particles_{s * N_DEM}.vtp")
+        path = os.path.join(run_dir, "particles_vtk", f"particles_{s * n_dem}.vtp")
         drags.append(read_particles(path) if os.path.exists(path) else (np.zeros(0),) * 5)
     dmax = max([float(d[4].max()) for d in drags if len(d[4])] or [1.0]) or 1.0
     for n, (ax, s, (speed, solid, spacing, origin), parts) in enumerate(
@@ -143,7 +144,7 @@ def render(run_dir, out):
     ax = axes[3]
     columns = thermo(run_dir)
     if "pore[16]" in columns:
-        t = np.asarray(columns["Step"]) / N_DEM
+        t = np.asarray(columns["Step"]) / n_dem
         ax.plot(t, columns["pore[16]"], "k-")
         for n, s in enumerate(times, start=1):
             ax.axvline(s, color="C3", ls=":")

@@ -5,7 +5,9 @@ diameters d) that differ in a seed or a swept knob, in three sizes:
   tiny   seconds per run: the CTest of the machinery (nothing physical to read from it)
   quick  2 cores, at most ~30 minutes per study: 5 cells per d instead of 7.1 (drag on a
          resolved sphere about 6 % low, doc/accuracy.md table 2, against 2.6 % at 8 cells),
-         fewer seeds and points, 2-4 % of the paper's run length
+         fewer seeds and points, 2-4 % of the paper's run length. in.pore coarsens by
+         acoustic scaling (its header): the fluid step grows to 1.42, tau to 0.852, so the
+         viscosity, the inlet speed, P_out and the DEM step stay the paper's
   paper  the paper's counts and 10^6 fluid steps (10^8 DEM steps) per run at 7.1 cells per d
 
 A run is (name, knobs): the knobs are in.pore's -var names with their values. Lengths go
@@ -39,7 +41,14 @@ SIZES = {
 # (383 s for 20 000), i.e. 3.9e-7 core-seconds per lattice cell and fluid step (a tiny run with
 # ~20 particles: 2.0e-7); the paper's scene (90 x 40 x 40) then costs 0.056 s per fluid step.
 CORE_SECONDS_PER_CELL_STEP = 3.9e-7
-N_DEM = 100
+N_DEM = 100  # DEM steps per fluid step at the paper's resolution (in.pore's n_dem)
+PAPER_CELLS_PER_D = 7.1
+
+
+def dem_steps_per_fluid_step(cells_per_d):
+    """in.pore's n_dem_used: the fluid step is 7.1 / cells_per_d of the paper's (acoustic
+    scaling), the DEM step stays the paper's."""
+    return int(math.floor(N_DEM * PAPER_CELLS_PER_D / float(cells_per_d) + 0.5))
 
 
 def cells(length, cells_per_d):
@@ -65,7 +74,8 @@ def core_hours(runs, ranks_per_run=1):
     more ranks costs about the same core-hours, a little more for the halo exchange)."""
     total = 0.0
     for _, knobs in runs:
-        fluid_steps = (int(knobs["steps"]) + int(knobs["warmup"])) / N_DEM
+        n_dem = dem_steps_per_fluid_step(knobs["cells_per_d"])
+        fluid_steps = (int(knobs["steps"]) + int(knobs["warmup"])) / n_dem
         total += fluid_steps * lattice_cells(knobs) * CORE_SECONDS_PER_CELL_STEP
     return total / 3600.0
 

@@ -6,6 +6,7 @@ pore[17] the largest P / P_out so far, pore[18] the burst count, pore[6] V_dep, 
 """
 import json
 import os
+import re
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "pore"))
@@ -13,6 +14,28 @@ from plot_pressure import read_thermo  # noqa: E402  (the main example's log rea
 
 BURST_COLUMNS = ("step", "time", "P_peak", "P_after", "delta_P", "delta_t", "V_dep", "L_dep",
                  "count_before", "count_after")
+
+
+def lattice_timing(run_dir):
+    """The run's own time steps, from fix lbm/pore's setup line in log.liggghts
+    ("... dt_lbm = 1.42 (n_dem = 142 x dt_dem = 0.01), dx = 0.2"): dict(n_dem, dt_dem, dt_f, dx)
+    in the script's units. A coarse run (in.pore's acoustic scaling) has a longer fluid step
+    than the paper's, so neither the DEM steps per fluid step nor the pressure unit
+    P_out = rho (dx / dt_f)^2 / 3 may be assumed."""
+    pattern = re.compile(r"dt_lbm = (\S+) \(n_dem = (\d+) x dt_dem = (\S+)\), dx = (\S+)")
+    with open(os.path.join(run_dir, "log.liggghts"), errors="replace") as f:
+        for line in f:
+            m = pattern.search(line)
+            if m:
+                return dict(dt_f=float(m.group(1)), n_dem=int(m.group(2)),
+                            dt_dem=float(m.group(3)), dx=float(m.group(4)))
+    raise ValueError(f"{run_dir}/log.liggghts: no fix lbm/pore setup line with dt_lbm and n_dem")
+
+
+def p_out(run_dir, rho=1.0):
+    """P_out = rho c_s^2 in the script's pressure units (c_s = dx / dt_f / sqrt 3)."""
+    t = lattice_timing(run_dir)
+    return rho * (t["dx"] / t["dt_f"]) ** 2 / 3.0
 
 
 def thermo(run_dir):

@@ -30,7 +30,7 @@ def read_thermo(path):
 def read_thermo_blocks(path):
     """Every thermo block of the log as (header, rows), in order (one per run command)."""
     blocks, header = [], None
-    with open(path) as log:
+    with open(path, errors="replace") as log:  # LIGGGHTS can leave stray bytes after an ERROR
         for line in log:
             words = line.split()
             if words and words[0] == "Step":

@@ -6,10 +6,13 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402,F401  (the figure modules draw with it)
 
-from study_io import bursts, finished_runs, thermo  # noqa: E402,F401
+from study_io import bursts, finished_runs, lattice_timing, p_out, thermo  # noqa: E402,F401
 
-N_DEM = 100  # DEM steps per fluid step (in.pore's n_dem)
-P_OUT_LATTICE = 1.0 / 3.0  # P_out = rho c_s^2 in lattice units
+
+def times(run, steps):
+    """DEM steps of a run as times in the script's unit (the paper's fluid step)."""
+    import numpy as np
+    return np.asarray(steps, float) * lattice_timing(run["folder"])["dt_dem"]
 
 
 def burst_groups(summary, x_of, y_of):

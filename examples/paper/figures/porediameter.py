@@ -7,7 +7,7 @@ particles that are not in the deposit, so this f_a is an upper estimate."""
 import numpy as np
 
 from fit_stats import bootstrap, fmt, slope_through_origin
-from figures.common import P_OUT_LATTICE, bursts, finished_runs, plt, result, save, thermo
+from figures.common import bursts, finished_runs, p_out, plt, result, save, thermo
 
 PAPER_K = 0.91
 
@@ -15,8 +15,7 @@ PAPER_K = 0.91
 def _points(run):
     """(L_dep / D, P_peak, f_a [P_out]) per burst of the run."""
     D = float(run["knobs"]["D"])
-    dx = 1.0 / float(run["knobs"]["cells_per_d"])
-    p_out = P_OUT_LATTICE * dx * dx  # rho c_s^2 with a fluid step of 1
+    unit = p_out(run["folder"])  # rho c_s^2 in the script's units
     columns = thermo(run["folder"])
     steps = np.asarray(columns.get("Step", []))
     hold = np.asarray(columns.get("walls[2]", []))
@@ -25,7 +24,7 @@ def _points(run):
         f_a = np.nan
         if len(hold) and b["L_dep"] > 0:
             k = int(np.argmin(abs(steps - b["step"])))
-            f_a = -hold[k] / (np.pi * D * b["L_dep"]) / p_out
+            f_a = -hold[k] / (np.pi * D * b["L_dep"]) / unit
         out.append((b["L_dep"] / D, b["P_peak"], f_a))
     return out
 

@@ -4,7 +4,7 @@ flux below P ~ 0.35. Fluxes over the second half of each run: the fluid's mean f
 the particles' growth rate of f_pore[13] (cumulative particle volume through the outlet)."""
 import numpy as np
 
-from figures.common import N_DEM, finished_runs, plt, result, save, thermo
+from figures.common import finished_runs, plt, result, save, thermo, times
 
 PAPER_THRESHOLD = 0.35
 
@@ -13,7 +13,7 @@ def _fluxes(run):
     columns = thermo(run["folder"])
     if "pore[3]" not in columns or len(columns["Step"]) < 4:
         return np.nan, np.nan
-    t = np.asarray(columns["Step"], float) / N_DEM
+    t = times(run, columns["Step"])
     half = t >= t[0] + (t[-1] - t[0]) / 2
     fluid = float(np.mean(np.asarray(columns["pore[3]"])[half]))
     volume = np.asarray(columns["pore[13]"], float)[half]

@@ -5,7 +5,7 @@ model's; it gives no numbers, so the paper's shape is drawn schematically: a fal
 Delta P within one Delta t."""
 import numpy as np
 
-from figures.common import N_DEM, bursts, finished_runs, plt, result, save, thermo
+from figures.common import bursts, finished_runs, plt, result, save, thermo, times
 
 
 def analyze(summary, out_dir):
@@ -18,14 +18,14 @@ def analyze(summary, out_dir):
             continue
         b = max(rows, key=lambda r: r["delta_P"])
         columns = thermo(run["folder"])
-        t = np.asarray(columns["Step"], float) / N_DEM
+        t = times(run, columns["Step"])
         P = np.asarray(columns["pore[16]"], float)
-        t_peak = b["step"] / N_DEM
+        t_peak = b["time"]
         tt = (t - t_peak) / b["delta_t"]
         keep = (tt > -3) & (tt < 4)
         ax.plot(tt[keep], (P[keep] - b["P_after"]) / b["delta_P"], "C3-", label=run["name"])
         ours = (f"Delta P = {b['delta_P']:.3g} P_out ({100 * b['delta_P'] / b['P_peak']:.0f} % "
-                f"of the peak) in Delta t = {b['delta_t']:.0f} fluid steps")
+                f"of the peak) in Delta t = {b['delta_t']:.0f} (the paper's fluid steps)")
         shown = b
         break
     ax.plot([-3, 0, 1, 4], [1, 1, 0, 0], "k:", label="paper's shape (schematic, no data given)")
