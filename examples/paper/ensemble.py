@@ -50,7 +50,17 @@ def scene_knobs(scene):
                 if m]
 
 
-def write_run_file(launch_dir, index, run_dir, knobs, scene=SCENE_SCRIPT):
+def study_scene(study_dir):
+    """The study's own copy of the scene script, <study>/in.pore, made at its first launch:
+    LIGGGHTS reads a script line by line while it runs, so a run would read a scene edited
+    in the repository meanwhile half old and half new; the copy also records what ran."""
+    copy = os.path.join(study_dir, "in.pore")
+    if not os.path.exists(copy):
+        shutil.copyfile(SCENE_SCRIPT, copy)
+    return copy
+
+
+def write_run_file(launch_dir, index, run_dir, knobs, scene):
     """<launch_dir>/<index>.in: the run's folder, its scene and its knobs for in.study.
     It first deletes every knob of the scene: `clear` keeps variables, so a partition's
     earlier run would otherwise leave its values (or the scene's index defaults, which a
@@ -137,7 +147,7 @@ def launch_partitions(driver, study_dir, runs, partitions, ranks_per_run, mpirun
         for i, name in enumerate(batch, start=1):
             run_dir = os.path.join(study_dir, "runs", name)
             _clean(run_dir)
-            write_run_file(launch_dir, i, run_dir, knobs_of[name])
+            write_run_file(launch_dir, i, run_dir, knobs_of[name], study_scene(study_dir))
         cmd = _study_command(driver, launch_dir, len(batch), len(batch), ranks_per_run, mpirun)
         start = time.time()
         code = _execute(cmd, launch_dir, os.path.join(launch_dir, "stdout.txt"), timeout)
@@ -160,7 +170,7 @@ def launch_pool(driver, study_dir, runs, parallel, ranks_per_run, mpirun, timeou
         _clean(run_dir)
         launch_dir = os.path.join(run_dir, "launch")
         os.makedirs(launch_dir)
-        write_run_file(launch_dir, 1, run_dir, knobs)
+        write_run_file(launch_dir, 1, run_dir, knobs, study_scene(study_dir))
         cmd = _study_command(driver, launch_dir, 1, 1, ranks_per_run, mpirun)
         start = time.time()
         code = _execute(cmd, launch_dir, os.path.join(run_dir, "stdout.txt"), timeout)

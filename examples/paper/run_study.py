@@ -79,6 +79,8 @@ def main():
         shutil.rmtree(os.path.join(out, "runs"))
     if os.path.isdir(os.path.join(out, "launches")):
         shutil.rmtree(os.path.join(out, "launches"))
+    if os.path.exists(os.path.join(out, "in.pore")):
+        os.remove(os.path.join(out, "in.pore"))  # a fresh copy of the scene (ensemble.study_scene)
     os.makedirs(out, exist_ok=True)
     launch = ensemble.launch_pool if args.mode == "pool" else ensemble.launch_partitions
     launches = launch(args.driver, out, runs, args.parallel, args.ranks_per_run, args.mpirun,
