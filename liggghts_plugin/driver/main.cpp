@@ -10,7 +10,6 @@
 #include <cstdlib>
 #include <cstdio>
 #include <cstring>
-#include <string>
 
 #include "input.h"
 #include "lammps.h"
@@ -27,12 +26,9 @@ namespace {
 // says "public", so the project's ERROR stays the last line. Restart files carry this
 // string; reading one written by Debian's `liggghts` warns that the versions differ.
 void hide_public_edition(LAMMPS_NS::Universe* universe) {
-  static std::string version;
-  version = universe->version;
-  const std::size_t at = version.find("PUBLIC");
-  if (at == std::string::npos) return;
-  version.replace(at, 6, "public");
-  universe->version = &version[0];
+  // Edited in place: the Universe owns (and deletes) the buffer.
+  char* at = std::strstr(universe->version, "PUBLIC");
+  if (at) std::memcpy(at, "public", 6);
 }
 
 }  // namespace
