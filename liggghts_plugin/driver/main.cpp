@@ -7,8 +7,8 @@
 #include <mpi.h>
 
 #include <csignal>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 
 #include "input.h"

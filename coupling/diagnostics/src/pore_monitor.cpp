@@ -161,9 +161,10 @@ std::vector<double> PoreMonitor::state() const {
 
 void PoreMonitor::restore(const std::vector<double>& state) {
   if (state.size() < std::size_t(kCount) + 2 || state[0] != double(kCount))
-    throw std::invalid_argument("pore monitor: the restart file holds another set of diagnostics (written "
-                                "by another version of lbm-pore, " + std::to_string(kCount) +
-                                " values expected); restart from a file written by this one");
+    throw std::invalid_argument(
+        "pore monitor: the restart file holds another set of diagnostics (written by another "
+        "version of lbm-pore, " +
+        std::to_string(kCount) + " values expected); restart from a file written by this one");
   std::copy(state.begin() + 1, state.begin() + 1 + kCount, values_.begin());
   last_burst_sample_ = static_cast<long long>(state[kCount + 1]);
   detector_.restore(std::vector<double>(state.begin() + kCount + 2, state.end()));
