@@ -1,9 +1,12 @@
 #include "lbm/checkpoint.h"
 
+#include <chrono>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <thread>
 
 #include "lbm/collide_stream.h"
 #include "lbm/d3q19.h"
@@ -36,6 +39,14 @@ Header header_of(const FluidSolver& s) {
   return h;
 }
 
+// Test-only hook (tests/faults/kill_check.py, kill_during_checkpoint): with
+// LBM_PORE_TEST_SLOW_WRITE=<seconds> each write pauses that long after the header, so a test
+// can kill the run while a checkpoint is half written. Unset: no pause.
+void pause_if_testing_slow_write() {
+  const char* seconds = std::getenv("LBM_PORE_TEST_SLOW_WRITE");
+  if (seconds) std::this_thread::sleep_for(std::chrono::duration<double>(std::atof(seconds)));
+}
+
 std::string rank_path(const FluidSolver& s, const std::string& path) {
   return path + "." + std::to_string(s.decomposition().comm.rank());
 }
@@ -60,6 +71,8 @@ void write_checkpoint(const FluidSolver& solver, const std::string& path) {
     if (!out) throw InputError("fluid checkpoint '" + file + "': cannot be written");
     const Header h = header_of(solver);
     out.write(reinterpret_cast<const char*>(&h), sizeof h);
+    out.flush();
+    pause_if_testing_slow_write();
     const auto& g = solver.layout();
     for_owned(g, [&](std::size_t cell) {
       out.put(static_cast<char>(solver.node_types()[cell]));

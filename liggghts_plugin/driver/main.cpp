@@ -1,16 +1,37 @@
 // liggghts-lbm: a drop-in for Debian's `liggghts` executable that also knows this project's
 // styles. Same command line (-in, -var, -log, -echo, -screen, -partition, ...), parsed by
-// LAMMPS_NS::LAMMPS itself; serial or under mpirun. The only difference to LIGGGHTS's own
-// main() is the call to register_lbm_pore_styles() before the input runs.
+// LAMMPS_NS::LAMMPS itself; serial or under mpirun. Differences to LIGGGHTS's own main():
+// register_lbm_pore_styles() before the input runs, stop signals that fix lbm/pore takes at
+// a fluid step (plugin_common/stop_signals.h), and an error that stays the last line of the
+// output (line-buffered stdout, no Open MPI abort notice, no LIGGGHTS-PUBLIC joke line).
 #include <mpi.h>
 
 #include <csignal>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 
 #include "input.h"
 #include "lammps.h"
+#include "plugin_common/stop_signals.h"
 #include "registry/style_registry.h"
 #include "signal_handling.h"
+#include "universe.h"
+
+namespace {
+
+// LIGGGHTS-PUBLIC's Error::all/one follow the ERROR line, one time in five, with a joke or a
+// "tip of the day" (error_special.h) that is read from a destroyed string and prints as
+// garbage. It does so only when the version string contains "PUBLIC": the driver's copy
+// says "public", so the project's ERROR stays the last line. Restart files carry this
+// string; reading one written by Debian's `liggghts` warns that the versions differ.
+void hide_public_edition(LAMMPS_NS::Universe* universe) {
+  // Edited in place: the Universe owns (and deletes) the buffer.
+  char* at = std::strstr(universe->version, "PUBLIC");
+  if (at) std::memcpy(at, "public", 6);
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   // As in LIGGGHTS's main: SIGINT/SIGTERM ask for a clean stop, SIGUSR1 for a restart file.
@@ -23,8 +44,20 @@ int main(int argc, char** argv) {
   usr1_action.sa_handler = LAMMPS_NS::SignalHandler::usr1_handler;
   sigaction(SIGUSR1, &usr1_action, nullptr);
 
+  // MPI's helper threads start blocking them: a signal sent to the process is taken by the
+  // main thread, which fix lbm/pore lets take it only at a fluid step (stop_signals.h).
+  lbm_pore::block_stop_signals();
+  // Open MPI prints its "MPI_ABORT was invoked" notice from the aborting process after the
+  // error that caused it; quiet (unless the user set it) so the project's ERROR is the last
+  // line. mpirun's own notices on a non-zero exit need `mpirun -q` (doc/liggghts_lbm.txt).
+  setenv("OMPI_MCA_orte_execute_quiet", "1", /*overwrite=*/0);
   MPI_Init(&argc, &argv);
+  lbm_pore::unblock_stop_signals();
+  // An error on one rank ends in MPI_Abort, which does not flush stdio: line buffering lets
+  // LIGGGHTS's "ERROR on proc N" reach a redirected screen (a batch job's output file).
+  std::setvbuf(stdout, nullptr, _IOLBF, BUFSIZ);
   auto* lammps = new LAMMPS_NS::LAMMPS(argc, argv, MPI_COMM_WORLD);
+  hide_public_edition(lammps->universe);
   lbm_pore::register_lbm_pore_styles(lammps);
   lammps->input->file();
   delete lammps;

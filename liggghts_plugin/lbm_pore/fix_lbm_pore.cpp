@@ -26,7 +26,9 @@
 #include "neigh_list.h"
 #include "neigh_request.h"
 #include "plugin_common/entry_guard.h"
+#include "plugin_common/ranks_error.h"
 #include "plugin_common/stop_run.h"
+#include "plugin_common/stop_signals.h"
 #include "pore_scene_setup.h"
 #include "neighbor.h"
 #include "update.h"
@@ -73,15 +75,27 @@ FixLbmPore::FixLbmPore(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg, arg) 
   grow_arrays(atom->nmax);
   atom->add_callback(0);  // grow/copy/exchange
   atom->add_callback(1);  // restart
+  // From here on stop signals reach the process only at a fluid step (post_integrate) or
+  // at the end of a run (post_run); blocked before any OpenMP worker of the fluid exists.
+  lbm_pore::block_stop_signals();
 }
 
 FixLbmPore::~FixLbmPore() {
   atom->delete_callback(id, 0);
   atom->delete_callback(id, 1);
   memory->destroy(hydrodynamic_force_);
+  lbm_pore::unblock_stop_signals();
 }
 
-int FixLbmPore::setmask() { return FixConst::POST_FORCE | FixConst::END_OF_STEP; }
+int FixLbmPore::setmask() { return FixConst::POST_INTEGRATE | FixConst::POST_FORCE | FixConst::END_OF_STEP; }
+
+// Before Neighbor::decide, where LIGGGHTS reads its stop flags: a SIGTERM is taken at a
+// fluid step (or the run's last step), on every rank at once (plugin_common/stop_signals.h),
+// so the forced restart is written right after the fluid step, as at a multiple of n_dem.
+void FixLbmPore::post_integrate() {
+  if (update->ntimestep % options_.n_dem == 0 || update->ntimestep == update->laststep)
+    lbm_pore::take_stop_requests(world);
+}
 
 void FixLbmPore::init() {
   try {
@@ -101,11 +115,15 @@ void FixLbmPore::init() {
     lbm_pore::report_current_exception(error, "fix lbm/pore", lbm_pore::ErrorScope::kAllRanks);
   }
   if (!resume_checkpoint_.empty()) {
+    // Each rank reads its own file: one missing or truncated file must stop every rank.
+    std::string failure;
     try {
       lbm::read_checkpoint(*solver_, resume_checkpoint_);
     } catch (const lbm::InputError& e) {
-      error->all(FLERR, (std::string("fix lbm/pore: restart: ") + e.what()).c_str());
+      failure = e.what();
     }
+    failure = lbm_pore::first_error_of_ranks(world, failure);
+    if (!failure.empty()) error->all(FLERR, ("fix lbm/pore: restart: " + failure).c_str());
     fluid_steps_ = solver_->time_step();
     resumed_ = true;
     resume_checkpoint_.clear();

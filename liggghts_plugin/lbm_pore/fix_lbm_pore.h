@@ -40,6 +40,7 @@ class FixLbmPore : public Fix {
   int setmask() override;
   void init() override;
   void setup(int vflag) override;
+  void post_integrate() override;
   void post_force(int vflag) override;
   void end_of_step() override;
   double compute_vector(int index) override;

@@ -17,6 +17,7 @@
 #include "lbm/fluid_solver.h"
 #include "lbm/stability.h"
 #include "plugin_common/stop_run.h"
+#include "plugin_common/stop_signals.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;
@@ -116,6 +117,9 @@ double FixLbmPore::compute_vector(int index) { return monitor_->value(index, *so
 
 // Where the time of the run went, on rank 0.
 void FixLbmPore::post_run() {
+  // A signal that came after the last step's post_integrate: every rank takes it here, so
+  // LIGGGHTS's input loop stops after this run on all of them.
+  lbm_pore::take_stop_requests(world);
   if (comm->me != 0) return;
   lbm_pore::print_to_screen_and_log(screen, logfile, timer_.report(MPI_Wtime(), coupling_->times()).c_str());
 }

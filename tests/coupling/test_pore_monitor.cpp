@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <vector>
 
 #include "coupling/diagnostics/bonds.h"
 #include "coupling/diagnostics/particle_probes.h"
@@ -82,6 +84,10 @@ TEST(PoreMonitor, DepositsAndCrossingsInHostUnits) {
   PoreMonitor resumed(setup, units);
   resumed.restore(monitor.state());
   EXPECT_EQ(resumed.values(), monitor.values());
+  // A state of another version (its own number of values first) is refused, not misread.
+  std::vector<double> foreign = monitor.state();
+  foreign[0] = PoreMonitor::kCount - 4;
+  EXPECT_THROW(resumed.restore(foreign), std::invalid_argument);
 }
 
 // A closed box (velocity 0, solid end layers): the pore is the narrowest section with fluid,

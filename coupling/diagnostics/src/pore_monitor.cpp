@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "lbm/macroscopic.h"
+#include "lbm/node_type.h"
 #include "lbm/stability.h"
 
 namespace coupling {
@@ -90,6 +91,34 @@ void PoreMonitor::update_fluid(const lbm::FluidSolver& solver, long long fluid_s
   v[kMaxFluidSpeed] = units_.velocity_to_physical(speed);
   v[kLatticeMach] = speed / lbm::kSoundSpeed;
   v[kFluidSteps] = double(fluid_steps);
+  v[kFluidMassHeld] = lbm::total_mass(solver) / solver.parameters().rho0 * fluid_mass_unit();
+  v[kParticleDisplacedMass] = double(owned_moving_nodes(solver)) * fluid_mass_unit();
+}
+
+// Nodes covered by particles, over all ranks (each counts the nodes it owns).
+long long PoreMonitor::owned_moving_nodes(const lbm::FluidSolver& solver) {
+  const lbm::BlockLayout& g = solver.layout();
+  long long count = 0;
+  for (int k = 0; k < g.size(2); ++k)
+    for (int j = 0; j < g.size(1); ++j)
+      for (int i = 0; i < g.size(0); ++i)
+        if (solver.node_types()[g.cell(i, j, k)] == lbm::kMoving) ++count;
+  solver.decomposition().comm.sum(&count, 1);
+  return count;
+}
+
+// Host mass of one lattice cell of fluid at the reference density.
+double PoreMonitor::fluid_mass_unit() const {
+  const double dx = units_.inputs().dx;
+  return units_.inputs().rho * dx * dx * dx;
+}
+
+// plane_flux is sum(rho u) / rho0 over the plane, the mass that crosses it in one fluid step
+// in cells of reference density (the inlet and outlet planes are the lattice's end layers).
+void PoreMonitor::add_plane_masses(const lbm::FluidSolver& solver) {
+  const int last = solver.decomposition().global.size(setup_.pore.axis) - 1;
+  values_[kFluidMassIn] += lbm::plane_flux(solver, setup_.pore.axis, 0) * fluid_mass_unit();
+  values_[kFluidMassOut] += lbm::plane_flux(solver, setup_.pore.axis, last) * fluid_mass_unit();
 }
 
 std::optional<BurstRecord> PoreMonitor::record_fluid_step(const lbm::FluidSolver& solver, long long fluid_step,
@@ -97,6 +126,8 @@ std::optional<BurstRecord> PoreMonitor::record_fluid_step(const lbm::FluidSolver
   const double pressure = pressure_loss_in_outlet_units(solver);
   values_[kPressureLossOutlet] = pressure;
   if (fluid_step <= last_burst_sample_) return std::nullopt;
+  // Fluid step 0 (the setup of the first run) has moved no fluid yet.
+  if (fluid_step > 0) add_plane_masses(solver);
   last_burst_sample_ = fluid_step;
   PressureSample sample;
   sample.fluid_step = fluid_step;
@@ -120,7 +151,8 @@ void PoreMonitor::write_bursts_to(const std::string& path, const BurstUnits& uni
 }
 
 std::vector<double> PoreMonitor::state() const {
-  std::vector<double> state = values_;
+  std::vector<double> state{double(kCount)};
+  state.insert(state.end(), values_.begin(), values_.end());
   state.push_back(double(last_burst_sample_));
   const auto detector = detector_.state();
   state.insert(state.end(), detector.begin(), detector.end());
@@ -128,12 +160,14 @@ std::vector<double> PoreMonitor::state() const {
 }
 
 void PoreMonitor::restore(const std::vector<double>& state) {
-  if (state.size() < std::size_t(kCount) + 1)
-    throw std::invalid_argument("pore monitor: restart state of " + std::to_string(state.size()) +
-                                " values, expected at least " + std::to_string(kCount + 1));
-  std::copy(state.begin(), state.begin() + kCount, values_.begin());
-  last_burst_sample_ = static_cast<long long>(state[kCount]);
-  detector_.restore(std::vector<double>(state.begin() + kCount + 1, state.end()));
+  if (state.size() < std::size_t(kCount) + 2 || state[0] != double(kCount))
+    throw std::invalid_argument(
+        "pore monitor: the restart file holds another set of diagnostics (written by another "
+        "version of lbm-pore, " +
+        std::to_string(kCount) + " values expected); restart from a file written by this one");
+  std::copy(state.begin() + 1, state.begin() + 1 + kCount, values_.begin());
+  last_burst_sample_ = static_cast<long long>(state[kCount + 1]);
+  detector_.restore(std::vector<double>(state.begin() + kCount + 2, state.end()));
   keep_erosive_bursts();
 }
 

@@ -61,6 +61,14 @@ class PoreMonitor {
     kPressureLossOutlet,  // the pressure loss in units of the outlet pressure, P / P_out
     kLargestPressureLoss, // the largest P / P_out of the run so far
     kBurstCount,          // erosive bursts recorded so far
+    // The fluid's mass budget (mass units; issue 14): mass in = mass out + change of mass held.
+    kFluidMassIn,         // mass through the inlet plane, sum over fluid steps (cumulative)
+    kFluidMassOut,        // ... and through the outlet plane
+    kFluidMassHeld,       // mass of the fluid nodes of the lattice now
+    // Mass of the fluid the particles displace: their lattice nodes at the reference density.
+    // A node a particle covers takes its mass out of kFluidMassHeld, a refilled one brings
+    // mass back: in - out = the change of held + displaced.
+    kParticleDisplacedMass,
     kCount
   };
 
@@ -81,7 +89,8 @@ class PoreMonitor {
   void update_fluid(const lbm::FluidSolver& solver, long long fluid_steps);
 
   // After each fluid step (collective): the pressure loss in units of P_out, fed to the
-  // burst detector with the deposits of record_particles(); returns the burst this step
+  // burst detector with the deposits of record_particles(), and the step's mass through the
+  // inlet and outlet planes added to their sums; returns the burst this step
   // completed, if any (also appended to bursts() and written to the burst file). A fluid
   // step already recorded (the setup of a later run) only refreshes P / P_out.
   std::optional<BurstRecord> record_fluid_step(const lbm::FluidSolver& solver, long long fluid_step,
@@ -93,8 +102,9 @@ class PoreMonitor {
   void write_bursts_to(const std::string& path, const BurstUnits& units, bool append);
 
   const std::vector<double>& values() const { return values_; }
-  // Everything a restart needs (the values, with the cumulative fluxes, and the burst
-  // detector's state), and back; restore throws std::invalid_argument on a foreign vector.
+  // Everything a restart needs (the number of values, the values, with the cumulative
+  // fluxes, and the burst detector's state), and back; restore throws std::invalid_argument
+  // on a foreign vector (another number of values: a restart file of another version).
   std::vector<double> state() const;
   void restore(const std::vector<double>& state);
 
@@ -109,6 +119,9 @@ class PoreMonitor {
   BurstDetector detector_;
   std::vector<BurstRecord> bursts_;  // the detector's falls that eroded a deposit
   void keep_erosive_bursts();
+  double fluid_mass_unit() const;
+  void add_plane_masses(const lbm::FluidSolver& solver);
+  static long long owned_moving_nodes(const lbm::FluidSolver& solver);
   long long last_burst_sample_ = -1;  // the fluid step last fed to the detector
   std::unique_ptr<BurstFileWriter> burst_file_;
 };
