@@ -3,7 +3,11 @@
 name (figures/<study>.py), writes <study>/results.json and the plot, prints the row of
 doc/paper.md (paper's value, ours with its 95 % bootstrap interval over runs, run cost).
 
-Usage: analyze.py <study folder>      (run_study.py calls it after the runs)
+Usage: analyze.py <study folder> [--figure NAME]   (run_study.py calls it after the runs)
+
+--figure analyses the folder's runs as another figure: e.g. the single-burst figure from the
+largest burst among a seed ensemble, `analyze.py studies/dropvol --figure singlejump`
+(results in <folder>/<NAME>/).
 """
 import importlib
 import json
@@ -29,12 +33,17 @@ def _plain(value):
     return value
 
 
-def analyze(study_dir):
+def analyze(study_dir, figure=None):
     summary = load_summary(study_dir)
-    module = importlib.import_module(f"figures.{summary['study']}")
-    result = module.analyze(summary, study_dir)
+    out_dir = study_dir
+    if figure is not None and figure != summary["study"]:
+        out_dir = os.path.join(study_dir, figure)
+        os.makedirs(out_dir, exist_ok=True)
+    module = importlib.import_module(f"figures.{figure or summary['study']}")
+    result = module.analyze(summary, out_dir)
     result["core_hours"] = round(summary["core_hours"], 4)
-    with open(os.path.join(study_dir, "results.json"), "w") as f:
+    result["runs_of_study"] = summary["study"]
+    with open(os.path.join(out_dir, "results.json"), "w") as f:
         json.dump(_plain(result), f, indent=1)
     print(f"| {result['figure']} | {result['paper']} | {result['ours']} | "
           f"{result['finished']}/{result['runs']} runs, {result['core_hours']} core-h |")
@@ -42,6 +51,9 @@ def analyze(study_dir):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 2:
+    if len(sys.argv) == 2:
+        analyze(sys.argv[1])
+    elif len(sys.argv) == 4 and sys.argv[2] == "--figure":
+        analyze(sys.argv[1], sys.argv[3])
+    else:
         sys.exit(__doc__)
-    analyze(sys.argv[1])
