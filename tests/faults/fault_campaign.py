@@ -96,7 +96,7 @@ def lbm_pore_cases():
         for v in ["0x10", "1.5", "-1", "1e3", "99999999999"]:
             cases.append(Case(f"lbm/pore {key} {v}", [f"'{key}'"], fixline=line.format(v=v)))
     for key, line in {"boundary": f"{GOOD_LBM} boundary curved", "lateral": f"{GOOD_LBM} lateral open",
-                      "rotation": f"{GOOD_LBM} rotation maybe", "mass_correction": f"{GOOD_LBM} mass_correction on",
+                      "rotation": f"{GOOD_LBM} rotation maybe", "mass_correction": f"{GOOD_LBM} mass_correction 1",
                       "lubrication": f"{GOOD_LBM} lubrication 2",
                       "scene": f"{LBM} dx 1 scene cube velocity 0.001"}.items():
         cases.append(Case(f"lbm/pore {key} bad word", [f"'{key}'"], fixline=line))
