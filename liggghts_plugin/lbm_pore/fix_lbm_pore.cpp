@@ -195,6 +195,7 @@ void FixLbmPore::build_lattice() {
 
   coupling::SphereCouplingOptions co;
   co.wall_scheme = lbm::moving_wall::parse(options_.boundary);
+  co.conserve_link_mass = options_.mass_correction;
   coupling_ = std::make_unique<coupling::SphereCoupling>(*solver_, co);
   lubrication_ = std::make_unique<coupling::LubricationKernel>(lbm_pore::lubrication_kernel(options_, *units_));
   monitor_setup_.criteria.speed_threshold = lbm_pore::deposit_speed_threshold(options_, *units_, drive);

@@ -160,6 +160,8 @@ PoreOptions parse_pore_options(const std::vector<std::string>& args) {
       o.boundary = words.text(key);
       if (o.boundary != "bounce_back" && o.boundary != "bouzidi" && o.boundary != "mls")
         fail("keyword 'boundary' = '" + o.boundary + "': must be bounce_back, bouzidi or mls");
+    } else if (key == "mass_correction") {
+      o.mass_correction = words.yes_no(key);
     } else if (key == "rotation") {
       o.rotation = words.yes_no(key);
     } else if (key == "lubrication") {
@@ -196,7 +198,7 @@ PoreOptions parse_pore_options(const std::vector<std::string>& args) {
 
 const char* pore_options_usage() {
   return "dx, rho, nu, n_dem, magic, scene (pore|voxels), origin, lateral, velocity, "
-         "pressure_loss, boundary, rotation, lubrication, lubrication_cutoff, deposit_speed, burst_drop, "
+         "pressure_loss, boundary, mass_correction, rotation, lubrication, lubrication_cutoff, deposit_speed, burst_drop, "
          "burst_window, burst_deposits, burst_file, vtk, "
          "checkpoint";
 }

@@ -28,6 +28,9 @@ struct PoreOptions {
   double drive_value = 0.0;
   // Particle coupling.
   std::string boundary = "mls";  // bounce_back | bouzidi | mls
+  // Put back the mass the interpolated links (bouzidi, mls) create at each node every step
+  // (lbm/moving_wall/link_mass.h); 'no' only to reproduce runs made before it existed.
+  bool mass_correction = true;
   bool lubrication = true;
   // The paper neglects rotation (translation only): with 'rotation no' the fix adds no
   // torque and the fluid sees the particles without spin (integrate them with fix nve).

@@ -250,8 +250,8 @@ std::string setup_summary(const PoreOptions& o, const coupling::UnitConversion& 
     n += std::snprintf(text + n, sizeof text - n,
                        "fix lbm/pore: pressure loss %g = %.4g lattice (density difference %.3g)\n", o.drive_value,
                        drive.pressure_loss, 3.0 * drive.pressure_loss);
-  n += std::snprintf(text + n, sizeof text - n, "fix lbm/pore: moving walls %s, lubrication %s (cutoff %g cells)\n",
-                     o.boundary.c_str(), o.lubrication ? "on" : "off", o.lubrication_cutoff);
+  n += std::snprintf(text + n, sizeof text - n, "fix lbm/pore: moving walls %s (mass correction %s), lubrication %s (cutoff %g cells)\n",
+                     o.boundary.c_str(), o.mass_correction ? "on" : "off", o.lubrication ? "on" : "off", o.lubrication_cutoff);
   if (bytes_per_node > 0.0)
     std::snprintf(text + n, sizeof text - n,
                   "fix lbm/pore: memory %.0f bytes per lattice node (fluid %.0f, particle coupling %.0f)\n",

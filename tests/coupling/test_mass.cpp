@@ -39,8 +39,9 @@ TEST(MassConservation, MovingSpheresDriftIsSmall) {
               "refilled %.2f (mean per step %.3f / %.3f), largest net change in one step %.3f; %.2f s\n",
               steps, drift, m1 - m0, m0, covered, refilled, covered / steps, refilled / steps,
               max_step_change, watch.seconds());
-  // Measured -1.7e-6 per step (MLS, averaged-density refill; 0.17 % over 1000 steps: the
-  // interpolated moving walls are not exactly mass conserving, and covering/refilling
-  // balance on average, 1.421 vs 1.425 per step). Bound 3e-6 per step.
+  // Measured -1.4e-6 per step (MLS, averaged-density refill, link mass correction on;
+  // -1.7e-6 without it): what remains is the bounce-back moving-wall terms (-0.024 per step)
+  // and covering/refilling, which balance on average (1.420 vs 1.425 per step). Bound 3e-6
+  // per step.
   EXPECT_LT(std::abs(drift), 3e-6);
 }

@@ -96,12 +96,13 @@ def lbm_pore_cases():
         for v in ["0x10", "1.5", "-1", "1e3", "99999999999"]:
             cases.append(Case(f"lbm/pore {key} {v}", [f"'{key}'"], fixline=line.format(v=v)))
     for key, line in {"boundary": f"{GOOD_LBM} boundary curved", "lateral": f"{GOOD_LBM} lateral open",
-                      "rotation": f"{GOOD_LBM} rotation maybe", "lubrication": f"{GOOD_LBM} lubrication 2",
+                      "rotation": f"{GOOD_LBM} rotation maybe", "mass_correction": f"{GOOD_LBM} mass_correction 1",
+                      "lubrication": f"{GOOD_LBM} lubrication 2",
                       "scene": f"{LBM} dx 1 scene cube velocity 0.001"}.items():
         cases.append(Case(f"lbm/pore {key} bad word", [f"'{key}'"], fixline=line))
     # Each keyword once (the last one used to win silently).
     for extra in ["dx 2", "rho 1", "nu 0.2", "n_dem 100", "magic 0.25", "velocity 0.002", "boundary mls",
-                  "lateral periodic", "rotation no", "lubrication yes", "lubrication_cutoff 0.5", "deposit_speed 1",
+                  "lateral periodic", "rotation no", "mass_correction no", "lubrication yes", "lubrication_cutoff 0.5", "deposit_speed 1",
                   "burst_drop 0.2", "burst_window 1", "burst_file b.txt", "vtk 10 out", "checkpoint ck",
                   "origin 0 0 0", f"{SCENE}"]:
         key = extra.split()[0]

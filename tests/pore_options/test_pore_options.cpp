@@ -29,13 +29,14 @@ TEST(PoreOptions, PaperSceneWithDefaults) {
   EXPECT_DOUBLE_EQ(o.nu, 1.0 / 6.0);
   EXPECT_EQ(o.boundary, "mls");
   EXPECT_TRUE(o.lubrication);
+  EXPECT_TRUE(o.mass_correction);
   EXPECT_EQ(o.drive, lbm_pore::PoreOptions::Drive::kVelocity);
 }
 
 TEST(PoreOptions, AllKeywords) {
   const auto o = lbm_pore::parse_pore_options(
       split("dx 1 rho 2 nu 0.1 n_dem 50 magic 0.25 scene voxels g.raw origin 0 1 2 lateral wall "
-            "pressure_loss 0.02 boundary bouzidi lubrication no lubrication_cutoff 0.5 "
+            "pressure_loss 0.02 boundary bouzidi mass_correction no lubrication no lubrication_cutoff 0.5 "
             "deposit_speed 0.001 vtk 10 out checkpoint ck"));
   EXPECT_EQ(o.voxel_file, "g.raw");
   EXPECT_FALSE(o.lateral_periodic);
@@ -44,6 +45,7 @@ TEST(PoreOptions, AllKeywords) {
   EXPECT_EQ(o.vtk_every, 10);
   EXPECT_EQ(o.vtk_directory, "out");
   EXPECT_FALSE(o.lubrication);
+  EXPECT_FALSE(o.mass_correction);
   EXPECT_EQ(o.checkpoint_prefix, "ck");
 }
 

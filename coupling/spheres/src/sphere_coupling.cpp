@@ -58,9 +58,21 @@ void SphereCoupling::apply_moving_walls_and_force(const ParticleView& view) {
     build_sphere_links(mapping_, view, solver_.node_types(), links_);
     lbm::apply_links(links_.links, options_.wall_scheme, solver_, &moment_cache_);
   }
-  StageTimer t(times_.force);
-  loads_.reset(view.num_total);
-  add_momentum_exchange(links_, options_.momentum_exchange, solver_, loads_);
+  {
+    StageTimer t(times_.force);
+    loads_.reset(view.num_total);
+    add_momentum_exchange(links_, options_.momentum_exchange, solver_, loads_);
+  }
+  // After the momentum exchange has read the returned populations: the correction moves no
+  // momentum, so the force is the scheme's own.
+  StageTimer t(times_.moving_walls);
+  const bool conserve = options_.conserve_link_mass;
+  link_defect_ = lbm::moving_wall::link_mass_defect(links_.links, solver_.parameters().rho0,
+                                                    solver_.layout(), solver_.populations(),
+                                                    conserve ? &defect_per_link_ : nullptr);
+  if (conserve)
+    lbm::moving_wall::restore_link_mass(links_.links, solver_.layout(), defect_per_link_,
+                                        solver_.populations());
 }
 
 void SphereCoupling::step(const ParticleView& view) {

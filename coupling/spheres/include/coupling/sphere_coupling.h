@@ -1,7 +1,7 @@
 #pragma once
 // One coupled fluid step with resolved moving spheres, as a named pipeline of stages
 // (waLBerla's time loop): map -> refill -> exchange_halo -> static walls -> moving walls ->
-// momentum exchange -> open boundaries -> collide_stream.
+// momentum exchange -> link mass correction -> open boundaries -> collide_stream.
 #include <chrono>
 
 #include "coupling/boundary/sphere_links.h"
@@ -11,6 +11,7 @@
 #include "coupling/reconstruction/refill.h"
 #include "lbm/fluid_solver.h"
 #include "lbm/link_boundary.h"
+#include "lbm/moving_wall/link_mass.h"
 
 namespace coupling {
 
@@ -18,6 +19,9 @@ struct SphereCouplingOptions {
   lbm::MovingWallScheme wall_scheme = lbm::MovingWallScheme::kMeiLuoShyy;
   RefillScheme refill = RefillScheme::kEquilibriumAveragedDensity;
   MomentumExchange momentum_exchange = MomentumExchange::kGalileanInvariant;
+  // Put back, at each fluid node, the mass its interpolated links created or destroyed
+  // (lbm/moving_wall/link_mass.h); without it the fluid mass grows in dense fixed arrays.
+  bool conserve_link_mass = true;
 };
 
 // Wall-clock seconds spent in each stage, accumulated over steps.
@@ -53,6 +57,9 @@ class SphereCoupling {
   void add_loads(std::size_t count, double* force, double* torque = nullptr) const;
 
   const MassChange& last_mass_change() const { return mass_; }
+  // Mass the moving-wall links of the last step created, measured before the correction
+  // (removed again when options().conserve_link_mass).
+  const lbm::moving_wall::LinkMassDefect& last_link_defect() const { return link_defect_; }
   const SphereLinks& links() const { return links_; }
   const SphereMapping& mapping() const { return mapping_; }
   const StageTimes& times() const { return times_; }
@@ -67,6 +74,8 @@ class SphereCoupling {
   lbm::moving_wall::MomentCache moment_cache_;  // reused every step
   HydrodynamicLoads loads_;
   MassChange mass_;
+  lbm::moving_wall::LinkMassDefect link_defect_;
+  std::vector<double> defect_per_link_;  // reused every step
   StageTimes times_;
 };
 
