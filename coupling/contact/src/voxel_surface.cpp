@@ -142,6 +142,7 @@ void VoxelSurface::find(Vec3 centre, double reach, std::vector<SurfacePoint>& ou
   const lbm::VoxelGeometry& geometry = blocks_.geometry();
   const Query q = make_query(geometry, centre, reach);
   if (q.empty) return;
+  const double culled_beyond = q.reach_u2 * (1.0 + 1e-9);
   // Blocks first, so the voxel loops below see each voxel once, in the same order as
   // find_surface_points within a block (the order of the contacts does not matter).
   for (int bk = q.lo[2] / kBlock; bk <= q.hi[2] / kBlock; ++bk)
@@ -151,13 +152,22 @@ void VoxelSurface::find(Vec3 centre, double reach, std::vector<SurfacePoint>& ou
         const int k_end = std::min(q.hi[2], bk * kBlock + kBlock - 1);
         const int j_end = std::min(q.hi[1], bj * kBlock + kBlock - 1);
         const int i_end = std::min(q.hi[0], bi * kBlock + kBlock - 1);
-        for (int k = std::max(q.lo[2], bk * kBlock); k <= k_end; ++k)
-          for (int j = std::max(q.lo[1], bj * kBlock); j <= j_end; ++j)
-            for (int i = std::max(q.lo[0], bi * kBlock); i <= i_end; ++i) {
-              if (!geometry.is_solid(i, j, k)) continue;
+        // Only the solid voxels of each row, and only rows and voxels whose per-axis gaps
+        // leave them within reach: consider_voxel rejects the others without a trace, and
+        // the margin is far above rounding, so the points found are the same.
+        for (int k = std::max(q.lo[2], bk * kBlock); k <= k_end; ++k) {
+          const double gap_z = squared_gap_to_cell(q.u[2], k);
+          if (gap_z > culled_beyond) continue;
+          for (int j = std::max(q.lo[1], bj * kBlock); j <= j_end; ++j) {
+            const double gap_yz = gap_z + squared_gap_to_cell(q.u[1], j);
+            if (gap_yz > culled_beyond) continue;
+            blocks_.for_each_solid_in_row(j, k, std::max(q.lo[0], bi * kBlock), i_end, [&](int i) {
+              if (gap_yz + squared_gap_to_cell(q.u[0], i) > culled_beyond) return;
               const int cell[3] = {i, j, k};
               consider_voxel(geometry, q, cell, out);
-            }
+            });
+          }
+        }
       }
 }
 

@@ -94,8 +94,8 @@ struct VoxelSumInput {
   double dt = 0.0;
   const VoxelSpringStore* springs = nullptr;  // last step's; null = no history
   // Optional block map of `geometry`: a particle whose voxel box touches no solid block (in
-  // open fluid) returns at once instead of scanning its (2 reach + 1)^3 voxels. The result is
-  // the same with or without it.
+  // open fluid) returns at once instead of scanning its (2 reach + 1)^3 voxels, and the scan
+  // visits only the solid runs of each row. The result is the same with or without it.
   const SolidBlockMap* blocks = nullptr;
 };
 
