@@ -134,8 +134,8 @@ TEST(VoxelSurface, NothingOutOfReach) {
   EXPECT_TRUE(points.empty());
 }
 
-TEST(VoxelSurface, AcceleratedQueryEqualsFullScan) {
-  // The pore scene of the paper (block with a cylindrical hole), probed on a grid of centres.
+// The pore scene of the paper: a block with a cylindrical hole, voxels of 0.5.
+lbm::VoxelGeometry pore_block_geometry() {
   lbm::VoxelGeometry g({30, 21, 21}, 0.5, {-1.0, 0.2, 0.0});
   for (int k = 0; k < 21; ++k)
     for (int j = 0; j < 21; ++j)
@@ -143,6 +143,12 @@ TEST(VoxelSurface, AcceleratedQueryEqualsFullScan) {
         const double dy = j - 10.0, dz = k - 10.0;
         if (dy * dy + dz * dz >= 36.0) g.set_solid(i, j, k, true);
       }
+  return g;
+}
+
+TEST(VoxelSurface, AcceleratedQueryEqualsFullScan) {
+  // The pore scene of the paper, probed on a grid of centres.
+  const lbm::VoxelGeometry g = pore_block_geometry();
   const VoxelSurface surface(g);
   std::vector<SurfacePoint> full, fast;
   int compared = 0, with_contacts = 0;
@@ -166,13 +172,7 @@ TEST(VoxelSurface, AcceleratedQueryEqualsFullScan) {
 // the same order and to the last bit, while it is reused and each time it is rebuilt: a
 // centre walking through the pore scene, 0.01 voxel per step.
 TEST(VoxelSurface, CandidateListGivesThePointsOfTheScan) {
-  lbm::VoxelGeometry g({30, 21, 21}, 0.5, {-1.0, 0.2, 0.0});
-  for (int k = 0; k < 21; ++k)
-    for (int j = 0; j < 21; ++j)
-      for (int i = 10; i < 20; ++i) {
-        const double dy = j - 10.0, dz = k - 10.0;
-        if (dy * dy + dz * dz >= 36.0) g.set_solid(i, j, k, true);
-      }
+  const lbm::VoxelGeometry g = pore_block_geometry();
   const VoxelSurface surface(g);
   WallCandidates candidates;
   std::vector<SurfacePoint> scanned, listed;
