@@ -2,22 +2,27 @@
 """bench_dem_substep: the cost of one DEM substep with this project's styles against stock
 LIGGGHTS on the same scene (in.dem_substep: 36 particles in a 52 x 24 x 24 pore scene).
 
-  lbm:   pair_style lbm/dashdot + fix wall/voxel (voxel sum) + fix lbm/pore (n_dem 100)
-  stock: pair_style gran model hooke + fix wall/gran planes, no fluid fix
+  lbm:    pair_style lbm/dashdot + fix wall/voxel model voxel_sum (the paper's, in.pore's)
+          + fix lbm/pore (n_dem 100)
+  smooth: the same with fix wall/voxel's default model smooth (in.pore_small's)
+  stock:  pair_style gran model hooke + fix wall/gran planes, no fluid fix
 
 The fluid step's own cost is left out: per substep, lbm = (loop time - the fluid and
 diagnostics times fix lbm/pore reports for the run) / DEM steps; what stays is what every
 substep pays (pair, wall, the substep load and lubrication of fix lbm/pore, integration,
 communication, neighbour lists) plus, spread over its n_dem substeps, the per-fluid-step
-gathering that the fix's fluid timer does not hold. The two cases run alternately (ABAB...),
---repeat pairs; the ratio of each pair, then the median and the spread (min, max).
+gathering that the fix's fluid timer does not hold. The cases run in turn (stock, lbm,
+smooth, stock, ...), --repeat rounds; the ratio of each round, then the median and the spread
+(min, max).
 
 Prints `BENCH <name> <value> <unit>` lines:
   BENCH dem_substep_ratio <median>          lbm / stock per substep (goal <= 1.3)
-  BENCH dem_substep_ratio_min / _max        spread over the pairs
-  BENCH dem_substep_lbm_us / _stock_us      microseconds per substep (medians)
+  BENCH dem_substep_ratio_min / _max        spread over the rounds
+  BENCH dem_substep_ratio_smooth[_min|_max] smooth / stock
+  BENCH dem_substep_<case>_us               microseconds per substep (medians)
   BENCH dem_substep_<case>_<part>_us        per component: pair, neigh, comm, output, and
-      modify_other (fixes, integration, the rest); for lbm also its lubrication share
+      modify_other (fixes, integration, the rest); for lbm and smooth also the lubrication
+      (part of modify_other)
 usage: bench_dem_substep.py --driver liggghts-lbm [--repeat 5] [--fluid-steps 1000]
 """
 import argparse
@@ -37,9 +42,15 @@ FIX = re.compile(r"fix lbm/pore: \d+ fluid steps in [0-9.e+-]+ s: fluid ([0-9.e+
 PARTS = {"Pair": "pair", "Neigh": "neigh", "Comm": "comm", "Outpt": "output", "Other": "modify_other"}
 
 
-def run_case(driver, lbm, fluid_steps, work):
+CASES = {"stock": ["-var", "lbm", "0"],
+         "lbm": ["-var", "lbm", "1", "-var", "wall_model", "voxel_sum"],
+         "smooth": ["-var", "lbm", "1", "-var", "wall_model", "smooth"]}
+
+
+def run_case(driver, case, fluid_steps, work):
+    lbm = case != "stock"
     cmd = [driver, "-in", os.path.join(HERE, "in.dem_substep"), "-log", "none",
-           "-var", "lbm", str(lbm), "-var", "fluid_steps", str(fluid_steps)]
+           "-var", "fluid_steps", str(fluid_steps)] + CASES[case]
     out = subprocess.run(cmd, cwd=work, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                          text=True, errors="replace", env=ENV)
     loop = LOOP.search(out.stdout)
@@ -63,26 +74,27 @@ def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--driver", required=True)
     parser.add_argument("--repeat", type=int, default=5)
-    parser.add_argument("--fluid-steps", type=int, default=1000)
+    parser.add_argument("--fluid-steps", type=int, default=500)
     args = parser.parse_args()
     driver = os.path.abspath(args.driver)
-    per_step = {1: [], 0: []}
-    parts = {1: [], 0: []}
+    per_step = {case: [] for case in CASES}
+    parts = {case: [] for case in CASES}
     with tempfile.TemporaryDirectory(prefix="bench_dem_substep_") as work:
         for _ in range(args.repeat):
-            for lbm in (1, 0):
-                total, by_part = run_case(driver, lbm, args.fluid_steps, work)
-                per_step[lbm].append(total)
-                parts[lbm].append(by_part)
-    ratios = [a / b for a, b in zip(per_step[1], per_step[0])]
-    for lbm, name in ((1, "lbm"), (0, "stock")):
-        print(f"BENCH dem_substep_{name}_us {statistics.median(per_step[lbm]):.3f} us")
-        for part in parts[lbm][0]:
-            value = statistics.median(p[part] for p in parts[lbm])
-            print(f"BENCH dem_substep_{name}_{part}_us {value:.3f} us")
-    print(f"BENCH dem_substep_ratio_min {min(ratios):.3f} ratio")
-    print(f"BENCH dem_substep_ratio_max {max(ratios):.3f} ratio")
-    print(f"BENCH dem_substep_ratio {statistics.median(ratios):.3f} ratio")
+            for case in CASES:
+                total, by_part = run_case(driver, case, args.fluid_steps, work)
+                per_step[case].append(total)
+                parts[case].append(by_part)
+    for case in CASES:
+        print(f"BENCH dem_substep_{case}_us {statistics.median(per_step[case]):.3f} us")
+        for part in parts[case][0]:
+            value = statistics.median(p[part] for p in parts[case])
+            print(f"BENCH dem_substep_{case}_{part}_us {value:.3f} us")
+    for case, suffix in (("smooth", "_smooth"), ("lbm", "")):
+        ratios = [a / b for a, b in zip(per_step[case], per_step["stock"])]
+        print(f"BENCH dem_substep_ratio{suffix}_min {min(ratios):.3f} ratio")
+        print(f"BENCH dem_substep_ratio{suffix}_max {max(ratios):.3f} ratio")
+        print(f"BENCH dem_substep_ratio{suffix} {statistics.median(ratios):.3f} ratio")
 
 
 if __name__ == "__main__":
