@@ -20,7 +20,7 @@ Prints BENCH lines (per fluid step, i.e. per N_DEM DEM steps; medians over the p
   coupled_vs_pure_fluid (the median ratio; goal <= 1.3).
 
 usage: bench_coupled.py --driver liggghts-lbm --pore-fluid pore_fluid
-                        --script examples/pore/in.pore_small [--pairs 5] [--chunk 100000] ...
+                        --script examples/pore/in.pore_small [--pairs 9] [--chunk 50000] ...
 """
 import argparse
 import os
@@ -58,9 +58,9 @@ def main():
     parser.add_argument("--warmup", type=int, default=200000, help="DEM steps without particles")
     parser.add_argument("--steps", type=int, default=1000000,
                         help="DEM steps with particles before the pairs (builds the load)")
-    parser.add_argument("--pairs", type=int, default=5)
-    parser.add_argument("--chunk", type=int, default=100000, help="DEM steps of each coupled run")
-    parser.add_argument("--pure-steps", type=int, default=1000, help="fluid steps of each pure run")
+    parser.add_argument("--pairs", type=int, default=9)
+    parser.add_argument("--chunk", type=int, default=50000, help="DEM steps of each coupled run")
+    parser.add_argument("--pure-steps", type=int, default=500, help="fluid steps of each pure run")
     args = parser.parse_args()
     knobs = {"pore_small": os.path.abspath(args.script),
              "pore_fluid": os.path.abspath(args.pore_fluid), "warmup": args.warmup,
@@ -90,6 +90,7 @@ def main():
         "coupled_dem_s": [(c[5] + c[6]) / c[0] for c in chunks],
     }
     ratios = [c[7] / a for c, a in zip(chunks, pure)]
+    print("bench_coupled: pair ratios " + " ".join(f"{r:.3f}" for r in ratios))
     print(f"BENCH pure_fluid_step_s {statistics.median(pure):.4g} s")
     for name, values in per_chunk.items():
         print(f"BENCH {name} {statistics.median(values):.4g} s")
