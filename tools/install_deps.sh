@@ -5,7 +5,8 @@
 set -euo pipefail
 packages=(cmake g++ make pkg-config liggghts libliggghts-dev liggghts-doc libvtk9-dev libeigen3-dev
           libopenmpi-dev openmpi-bin libgtest-dev python3 python3-numpy python3-matplotlib python3-vtk9
-          clang libclang-rt-14-dev)  # the last two: libFuzzer for tests/fuzz (skipped without them)
+          clang libclang-rt-14-dev  # libFuzzer for tests/fuzz (skipped without them)
+          libplb-dev)               # Palabos, for bench_lbm's side-by-side figure (skipped without it)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -18,7 +18,7 @@ WallForce SmoothWallModel::apply(int i, const WallParticle& particle) {
   WallForce out;
   double* history = &history_[static_cast<std::size_t>(i) * kStride];
   const double reach = contact::wall_contact_reach(params_, particle.radius);
-  surface_.find(particle.centre, reach, points_);
+  surface_.find(particle.centre, reach, points_, candidates_[i]);
   if (points_.empty()) {
     std::fill(history, history + kStride, 0.0);
     return out;
@@ -74,6 +74,7 @@ TimeStepFinding SmoothWallModel::time_step(double mass, double /*radius*/) const
 
 void SmoothWallModel::grow(int nmax) {
   history_.resize(static_cast<std::size_t>(nmax) * kStride, 0.0);
+  candidates_.resize(nmax);
 }
 
 void SmoothWallModel::copy(int from, int to) {

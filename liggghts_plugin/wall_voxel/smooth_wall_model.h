@@ -38,6 +38,10 @@ class SmoothWallModel : public WallModel {
   contact::VoxelSurface surface_;  // search structure over *geometry_
   std::vector<double> history_;    // [atom][kMaxContacts][kHistoryPerContact]
   std::vector<contact::SurfacePoint> points_;  // scratch, reused
+  // Per atom slot: the voxels its wall search needs (contact/wall_candidates.h). The lists
+  // check themselves against the centre they were built for, so an atom that moved to another
+  // slot (sorting, migration) at worst rebuilds them; copy() need not move them.
+  std::vector<contact::WallCandidates> candidates_;
 };
 
 }  // namespace lbm_pore

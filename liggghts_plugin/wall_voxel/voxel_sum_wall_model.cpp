@@ -15,6 +15,7 @@ WallForce VoxelSumWallModel::apply(int i, const WallParticle& particle) {
   in.dt = particle.dt;
   in.springs = &springs_[i];
   in.blocks = &blocks_;
+  in.candidates = &candidates_[i];
   const contact::VoxelSumResult result = contact::voxel_sum_wall_force(params_, in);
   // Out of reach of every voxel the springs are forgotten (without copying an empty store).
   if (result.contacts == 0)

@@ -134,8 +134,8 @@ TEST(VoxelSurface, NothingOutOfReach) {
   EXPECT_TRUE(points.empty());
 }
 
-TEST(VoxelSurface, AcceleratedQueryEqualsFullScan) {
-  // The pore scene of the paper (block with a cylindrical hole), probed on a grid of centres.
+// The pore scene of the paper: a block with a cylindrical hole, voxels of 0.5.
+lbm::VoxelGeometry pore_block_geometry() {
   lbm::VoxelGeometry g({30, 21, 21}, 0.5, {-1.0, 0.2, 0.0});
   for (int k = 0; k < 21; ++k)
     for (int j = 0; j < 21; ++j)
@@ -143,6 +143,12 @@ TEST(VoxelSurface, AcceleratedQueryEqualsFullScan) {
         const double dy = j - 10.0, dz = k - 10.0;
         if (dy * dy + dz * dz >= 36.0) g.set_solid(i, j, k, true);
       }
+  return g;
+}
+
+TEST(VoxelSurface, AcceleratedQueryEqualsFullScan) {
+  // The pore scene of the paper, probed on a grid of centres.
+  const lbm::VoxelGeometry g = pore_block_geometry();
   const VoxelSurface surface(g);
   std::vector<SurfacePoint> full, fast;
   int compared = 0, with_contacts = 0;
@@ -160,4 +166,31 @@ TEST(VoxelSurface, AcceleratedQueryEqualsFullScan) {
         if (!full.empty()) ++with_contacts;
       }
   EXPECT_GT(with_contacts, compared / 10);
+}
+
+// A particle's candidate list (contact/wall_candidates.h) gives the points of the scan, in
+// the same order and to the last bit, while it is reused and each time it is rebuilt: a
+// centre walking through the pore scene, 0.01 voxel per step.
+TEST(VoxelSurface, CandidateListGivesThePointsOfTheScan) {
+  const lbm::VoxelGeometry g = pore_block_geometry();
+  const VoxelSurface surface(g);
+  WallCandidates candidates;
+  std::vector<SurfacePoint> scanned, listed;
+  int with_contacts = 0;
+  for (int step = 0; step < 3000; ++step) {
+    const double t = 0.005 * step;
+    const Vec3 centre{2.0 + t * 0.4, 5.2 + 2.3 * std::cos(t), 5.0 + 2.3 * std::sin(t)};
+    surface.find(centre, 1.1, scanned);
+    surface.find(centre, 1.1, listed, candidates);
+    ASSERT_EQ(scanned.size(), listed.size()) << "step " << step;
+    for (std::size_t p = 0; p < scanned.size(); ++p) {
+      ASSERT_EQ(scanned[p].distance, listed[p].distance);
+      for (int a = 0; a < 3; ++a) {
+        ASSERT_EQ(scanned[p].point[a], listed[p].point[a]);
+        ASSERT_EQ(scanned[p].normal[a], listed[p].normal[a]);
+      }
+    }
+    if (!scanned.empty()) ++with_contacts;
+  }
+  EXPECT_GT(with_contacts, 300);
 }

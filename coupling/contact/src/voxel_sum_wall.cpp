@@ -72,49 +72,122 @@ VoxelDistance distance_to_voxel(const lbm::VoxelGeometry& geometry, Vec3 centre,
   return out;
 }
 
+namespace {
+
+// Voxels whose cube can come within `reach` of the centre at lattice coordinates u (cubes
+// centred on their voxel): |u - i| <= reach + 1/2 along every axis, clamped to the geometry.
+struct VoxelBox {
+  int lo[3], hi[3];
+  bool empty = false;
+
+  VoxelBox(const lbm::VoxelGeometry& geometry, const double u[3], double reach_cells) {
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = std::max(0, static_cast<int>(std::ceil(u[a] - reach_cells - 0.5)));
+      hi[a] = std::min(geometry.dims()[a] - 1, static_cast<int>(std::floor(u[a] + reach_cells + 0.5)));
+      empty = empty || lo[a] > hi[a];
+    }
+  }
+  bool contains(const std::array<int, 3>& cell) const {
+    for (int a = 0; a < 3; ++a)
+      if (cell[a] < lo[a] || cell[a] > hi[a]) return false;
+    return true;
+  }
+};
+
+// Calls visit(i, j, k) for every solid voxel of the box that may lie within `reach` of the
+// centre at lattice coordinates u, in increasing k, j, i.
+template <class Visit>
+void for_each_solid_voxel_near(const lbm::VoxelGeometry& geometry, const SolidBlockMap* blocks,
+                               const double u[3], double reach, Visit&& visit) {
+  const double reach_cells = reach / geometry.spacing();
+  const VoxelBox box(geometry, u, reach_cells);
+  if (box.empty) return;
+  const int* lo = box.lo;
+  const int* hi = box.hi;
+  if (blocks != nullptr && !blocks->any_solid(lo, hi)) return;
+  // The box holds (2 reach + 1)^3 voxels, the ball within reach about half of them, and near a
+  // flat wall only a few of its solid ones: skip the voxels whose cube is beyond reach by its
+  // per-axis gaps alone (squared, in cells), before the caller's exact distance. The margin is
+  // far above the rounding of both, so every voxel the exact test keeps is still visited, in
+  // the same order: the sum is bit-identical to scanning the whole box.
+  const double culled_beyond = reach_cells * reach_cells * (1.0 + 1e-9);
+  // squared_gap_to_cell's voxel spans [cell, cell + 1): here the cube is centred on the cell.
+  const auto squared_gap = [](double coordinate, int cell) {
+    return squared_gap_to_cell(coordinate + 0.5, cell);
+  };
+  for (int k = lo[2]; k <= hi[2]; ++k) {
+    const double gap_z = squared_gap(u[2], k);
+    if (gap_z > culled_beyond) continue;
+    for (int j = lo[1]; j <= hi[1]; ++j) {
+      const double gap_yz = gap_z + squared_gap(u[1], j);
+      if (gap_yz > culled_beyond) continue;
+      // The row's cells within the remaining reach, one more on each side against rounding.
+      const double half_chord = std::sqrt(culled_beyond - gap_yz) + 0.5;
+      const int first = std::max(lo[0], static_cast<int>(std::ceil(u[0] - half_chord)) - 1);
+      const int last = std::min(hi[0], static_cast<int>(std::floor(u[0] + half_chord)) + 1);
+      const auto in_reach = [&](int i) {
+        if (gap_yz + squared_gap(u[0], i) <= culled_beyond) visit(i, j, k);
+      };
+      if (blocks == nullptr) {
+        for (int i = first; i <= last; ++i)
+          if (geometry.is_solid(i, j, k)) in_reach(i);
+      } else {
+        blocks->for_each_solid_in_row(j, k, first, last, in_reach);
+      }
+    }
+  }
+}
+
+}  // namespace
+
 VoxelSumResult voxel_sum_wall_force(const WallContactParams& params, const VoxelSumInput& in) {
   VoxelSumResult out;
   const lbm::VoxelGeometry& geometry = in.geometry;
   const double spacing = geometry.spacing();
   const auto& origin = geometry.origin();
-  const auto& dims = geometry.dims();
   const double reach = wall_contact_reach(params, in.radius);
-  const double reach_cells = reach / spacing;
-  // Voxels whose cube can come within reach: |u - i| <= reach + 1/2 along every axis.
-  int lo[3], hi[3];
-  for (int a = 0; a < 3; ++a) {
-    const double u = (in.centre[a] - origin[a]) / spacing;
-    lo[a] = std::max(0, static_cast<int>(std::ceil(u - reach_cells - 0.5)));
-    hi[a] = std::min(dims[a] - 1, static_cast<int>(std::floor(u + reach_cells + 0.5)));
-    if (lo[a] > hi[a]) return out;
-  }
-  if (in.blocks != nullptr && !in.blocks->any_solid(lo, hi)) return out;
+  // The centre in lattice coordinates, as distance_to_voxel computes it.
+  double u[3];
+  for (int a = 0; a < 3; ++a) u[a] = (in.centre[a] - origin[a]) / spacing;
   const bool keep_springs = params.friction.mu > 0.0;
-  for (int k = lo[2]; k <= hi[2]; ++k)
-    for (int j = lo[1]; j <= hi[1]; ++j)
-      for (int i = lo[0]; i <= hi[0]; ++i) {
-        if (!geometry.is_solid(i, j, k)) continue;
-        const VoxelDistance voxel = distance_to_voxel(geometry, in.centre, i, j, k);
-        if (voxel.distance > reach) continue;
-        const auto key = static_cast<std::int64_t>(geometry.index(i, j, k));
-        const Vec3* stored = in.springs != nullptr ? in.springs->find(key) : nullptr;
+  // Eq. 6's term of solid voxel (i, j, k), if it is within reach.
+  const auto add_voxel = [&](int i, int j, int k) {
+    const VoxelDistance voxel = distance_to_voxel(geometry, in.centre, i, j, k);
+    if (voxel.distance > reach) return;
+    const auto key = static_cast<std::int64_t>(geometry.index(i, j, k));
+    const Vec3* stored = in.springs != nullptr ? in.springs->find(key) : nullptr;
 
-        WallContactInput contact;
-        contact.normal = voxel.normal;
-        contact.gap = voxel.distance - in.radius;
-        contact.radius = in.radius;
-        contact.mass = in.mass;
-        contact.velocity = in.velocity;
-        contact.spring = stored != nullptr ? *stored : Vec3{};
-        contact.dt = in.dt;
-        const WallContactResult result = wall_contact_force(params, contact);
-        if (!result.active) continue;
-        out.force += result.force;
-        ++out.contacts;
-        if (result.sliding) ++out.sliding;
-        out.max_overlap_ratio = std::max(out.max_overlap_ratio, -contact.gap / in.radius);
-        if (keep_springs && !out.springs.add(key, result.spring)) ++out.springs_dropped;
-      }
+    WallContactInput contact;
+    contact.normal = voxel.normal;
+    contact.gap = voxel.distance - in.radius;
+    contact.radius = in.radius;
+    contact.mass = in.mass;
+    contact.velocity = in.velocity;
+    contact.spring = stored != nullptr ? *stored : Vec3{};
+    contact.dt = in.dt;
+    const WallContactResult result = wall_contact_force(params, contact);
+    if (!result.active) return;
+    out.force += result.force;
+    ++out.contacts;
+    if (result.sliding) ++out.sliding;
+    out.max_overlap_ratio = std::max(out.max_overlap_ratio, -contact.gap / in.radius);
+    if (keep_springs && !out.springs.add(key, result.spring)) ++out.springs_dropped;
+  };
+  if (in.candidates == nullptr) {
+    for_each_solid_voxel_near(geometry, in.blocks, u, reach, add_voxel);
+    return out;
+  }
+  WallCandidates& candidates = *in.candidates;
+  if (!candidates.covers(in.centre, reach)) {
+    candidates.restart(in.centre, reach + kWallCandidateSkin * spacing);
+    for_each_solid_voxel_near(geometry, in.blocks, u, candidates.reach,
+                              [&](int i, int j, int k) { candidates.voxels.push_back({i, j, k}); });
+  }
+  // The voxels of this query's own box, as the scan would see them.
+  const VoxelBox box(geometry, u, reach / spacing);
+  if (box.empty) return out;
+  for (const auto& v : candidates.voxels)
+    if (box.contains(v)) add_voxel(v[0], v[1], v[2]);
   return out;
 }
 

@@ -67,6 +67,12 @@ struct Query {
   double reach_u2;
   int lo[3], hi[3];   // voxel range within reach, clamped to the geometry
   bool empty;
+
+  bool contains(const int cell[3]) const {
+    for (int a = 0; a < 3; ++a)
+      if (cell[a] < lo[a] || cell[a] > hi[a]) return false;
+    return true;
+  }
 };
 
 Query make_query(const lbm::VoxelGeometry& geometry, Vec3 centre, double reach) {
@@ -121,6 +127,40 @@ void consider_voxel(const lbm::VoxelGeometry& geometry, const Query& q, const in
   out.push_back(p);
 }
 
+// Calls visit(cell) for every solid voxel that may lie within the query's reach, block by
+// block: each voxel once, in the same order as find_surface_points within a block (the order
+// of the contacts does not matter), and in an order that does not depend on the query.
+template <class Visit>
+void for_each_solid_voxel_near(const SolidBlockMap& blocks, const Query& q, Visit&& visit) {
+  constexpr int kBlock = SolidBlockMap::kBlock;
+  if (q.empty) return;
+  const double culled_beyond = q.reach_u2 * (1.0 + 1e-9);
+  for (int bk = q.lo[2] / kBlock; bk <= q.hi[2] / kBlock; ++bk)
+    for (int bj = q.lo[1] / kBlock; bj <= q.hi[1] / kBlock; ++bj)
+      for (int bi = q.lo[0] / kBlock; bi <= q.hi[0] / kBlock; ++bi) {
+        if (!blocks.has_solid(bi, bj, bk)) continue;
+        const int k_end = std::min(q.hi[2], bk * kBlock + kBlock - 1);
+        const int j_end = std::min(q.hi[1], bj * kBlock + kBlock - 1);
+        const int i_end = std::min(q.hi[0], bi * kBlock + kBlock - 1);
+        // Only the solid voxels of each row, and only rows and voxels whose per-axis gaps
+        // leave them within reach: consider_voxel rejects the others without a trace, and
+        // the margin is far above rounding, so the points found are the same.
+        for (int k = std::max(q.lo[2], bk * kBlock); k <= k_end; ++k) {
+          const double gap_z = squared_gap_to_cell(q.u[2], k);
+          if (gap_z > culled_beyond) continue;
+          for (int j = std::max(q.lo[1], bj * kBlock); j <= j_end; ++j) {
+            const double gap_yz = gap_z + squared_gap_to_cell(q.u[1], j);
+            if (gap_yz > culled_beyond) continue;
+            blocks.for_each_solid_in_row(j, k, std::max(q.lo[0], bi * kBlock), i_end, [&](int i) {
+              if (gap_yz + squared_gap_to_cell(q.u[0], i) > culled_beyond) return;
+              const int cell[3] = {i, j, k};
+              visit(cell);
+            });
+          }
+        }
+      }
+}
+
 }  // namespace
 
 void find_surface_points(const lbm::VoxelGeometry& geometry, Vec3 centre, double reach,
@@ -139,26 +179,26 @@ void find_surface_points(const lbm::VoxelGeometry& geometry, Vec3 centre, double
 
 void VoxelSurface::find(Vec3 centre, double reach, std::vector<SurfacePoint>& out) const {
   out.clear();
-  const lbm::VoxelGeometry& geometry = blocks_.geometry();
-  const Query q = make_query(geometry, centre, reach);
+  const Query q = make_query(geometry(), centre, reach);
+  for_each_solid_voxel_near(blocks_, q,
+                            [&](const int cell[3]) { consider_voxel(geometry(), q, cell, out); });
+}
+
+void VoxelSurface::find(Vec3 centre, double reach, std::vector<SurfacePoint>& out,
+                        WallCandidates& candidates) const {
+  out.clear();
+  if (!candidates.covers(centre, reach)) {
+    candidates.restart(centre, reach + kWallCandidateSkin * geometry().spacing());
+    const Query wide = make_query(geometry(), centre, candidates.reach);
+    for_each_solid_voxel_near(blocks_, wide, [&](const int cell[3]) {
+      candidates.voxels.push_back({cell[0], cell[1], cell[2]});
+    });
+  }
+  const Query q = make_query(geometry(), centre, reach);
   if (q.empty) return;
-  // Blocks first, so the voxel loops below see each voxel once, in the same order as
-  // find_surface_points within a block (the order of the contacts does not matter).
-  for (int bk = q.lo[2] / kBlock; bk <= q.hi[2] / kBlock; ++bk)
-    for (int bj = q.lo[1] / kBlock; bj <= q.hi[1] / kBlock; ++bj)
-      for (int bi = q.lo[0] / kBlock; bi <= q.hi[0] / kBlock; ++bi) {
-        if (!blocks_.has_solid(bi, bj, bk)) continue;
-        const int k_end = std::min(q.hi[2], bk * kBlock + kBlock - 1);
-        const int j_end = std::min(q.hi[1], bj * kBlock + kBlock - 1);
-        const int i_end = std::min(q.hi[0], bi * kBlock + kBlock - 1);
-        for (int k = std::max(q.lo[2], bk * kBlock); k <= k_end; ++k)
-          for (int j = std::max(q.lo[1], bj * kBlock); j <= j_end; ++j)
-            for (int i = std::max(q.lo[0], bi * kBlock); i <= i_end; ++i) {
-              if (!geometry.is_solid(i, j, k)) continue;
-              const int cell[3] = {i, j, k};
-              consider_voxel(geometry, q, cell, out);
-            }
-      }
+  // The voxels of this query's own box, as the scan would see them.
+  for (const auto& cell : candidates.voxels)
+    if (q.contains(cell.data())) consider_voxel(geometry(), q, cell.data(), out);
 }
 
 }  // namespace contact

@@ -8,48 +8,140 @@
 // writes with streaming stores (no write-allocate), so it is held to the same yardstick.
 // Also one rank's share of the paper's lattice (90 x 40 x 40 split in two along x: rows of
 // 45 nodes) on one thread, and the memory the solver holds per lattice node.
+// When CMake found Palabos (Debian's libplb-dev), the same 128^3 TRT case in Palabos on one
+// thread, interleaved with ours (ours, Palabos, ours, ...): BENCH lbm_vs_palabos, the median
+// of the pairs' speed ratios, with their spread (palabos_trt_case.h).
 #include <omp.h>
 
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <memory>
+#include <vector>
 
 #include "lbm/decomposition.h"
 #include "lbm/fluid_solver.h"
+#include "palabos_trt_case.h"
 #include "stream_bandwidth.h"
 
 namespace {
+
+constexpr double kTau = 0.8;
 
 struct Speed {
   double mlups = 0.0;
   double bytes_per_node = 0.0;
 };
 
-Speed measure_mlups(std::array<int, 3> dims, int threads) {
-  omp_set_num_threads(threads);
+template <class Step>
+double seconds_for(int steps, Step&& step) {
+  const auto start = std::chrono::steady_clock::now();
+  for (int s = 0; s < steps; ++s) step();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Enough steps for ~0.5 s at the expected speed.
+int timed_steps(double cells) { return std::max(5, int(3e7 / cells)); }
+
+std::unique_ptr<lbm::FluidSolver> periodic_solver(std::array<int, 3> dims, double magic) {
   lbm::VoxelGeometry geometry(dims);
   lbm::FluidParameters p;
-  p.tau = 0.8;
+  p.tau = kTau;
+  p.magic = magic;
   p.periodic = {true, true, true};
   lbm::Box box;
   box.hi = dims;
-  lbm::FluidSolver solver(geometry, p, lbm::FlowDrive{},
-                          lbm::Decomposition::serial(box, p.periodic));
-  solver.initialise_equilibrium(1.0, {0.01, 0.0, 0.0});
+  return std::make_unique<lbm::FluidSolver>(geometry, p, lbm::FlowDrive{},
+                                            lbm::Decomposition::serial(box, p.periodic));
+}
+
+Speed measure_mlups(std::array<int, 3> dims, int threads) {
+  omp_set_num_threads(threads);
+  const auto solver = periodic_solver(dims, lbm::FluidParameters{}.magic);
+  solver->initialise_equilibrium(1.0, {0.01, 0.0, 0.0});
   const double cells = double(dims[0]) * dims[1] * dims[2];
-  for (int s = 0; s < 3; ++s) solver.step();  // warm up: page faults, caches
-  // Enough steps for ~0.5 s at the expected speed; best of three repeats.
-  const int steps = std::max(5, int(3e7 / cells));
-  double best = 0.0;
-  for (int repeat = 0; repeat < 3; ++repeat) {
-    const auto start = std::chrono::steady_clock::now();
-    for (int s = 0; s < steps; ++s) solver.step();
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    best = std::max(best, cells * steps / seconds / 1e6);
+  for (int s = 0; s < 3; ++s) solver->step();  // warm up: page faults, caches
+  const int steps = timed_steps(cells);
+  double best = 0.0;  // best of three repeats
+  for (int repeat = 0; repeat < 3; ++repeat)
+    best = std::max(best, cells * steps / seconds_for(steps, [&] { solver->step(); }) / 1e6);
+  return {best, solver->bytes_per_node()};
+}
+
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+// Our side of the Palabos case: the magic parameter Lambda = (1/omega+ - 1/2)(1/omega- - 1/2)
+// that gives Palabos's fixed odd-moment rate omega- at our tau.
+double palabos_case_magic() { return (kTau - 0.5) * (1.0 / palabos_trt_omega_minus() - 0.5); }
+
+// Both codes from the same shear wave: equal to round-off when lattice, equilibrium and the
+// two TRT rates are the same. Largest velocity difference over the nodes, relative to the
+// wave's amplitude, after a few steps (the pull step of ours and Palabos's collide-then-
+// stream differ by a collision, which leaves the moments unchanged).
+double palabos_velocity_difference() {
+  const int n = 16, steps = 20;
+  const double amplitude = 0.01;
+  const NodeState wave = [&](int, int j, int) -> std::array<double, 4> {
+    return {1.0, amplitude * std::sin(2.0 * M_PI * (j + 0.5) / n), 0.0, 0.0};
+  };
+  const auto ours = periodic_solver({n, n, n}, palabos_case_magic());
+  ours->initialise_equilibrium(wave);
+  const auto palabos = make_palabos_trt_case(n, kTau, wave);
+  for (int s = 0; s < steps; ++s) {
+    ours->step();
+    palabos->step();
   }
-  return {best, solver.bytes_per_node()};
+  double largest = 0.0;
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const auto a = ours->velocity(ours->layout().cell(i, j, k));
+        const auto b = palabos->velocity(i, j, k);
+        for (int d = 0; d < 3; ++d) largest = std::max(largest, std::abs(a[d] - b[d]));
+      }
+  return largest / amplitude;
+}
+
+// 128^3, one thread each (Palabos runs in one process), pairs interleaved so that both see
+// the same load of a shared machine.
+void compare_with_palabos() {
+  if (!palabos_available()) {
+    std::printf("bench_lbm: built without Palabos (Debian libplb-dev not found at configure): lbm_vs_palabos skipped\n");
+    return;
+  }
+  std::printf("BENCH palabos_same_case_velocity_difference %.2e relative\n",
+              palabos_velocity_difference());
+  omp_set_num_threads(1);
+  const int n = 128, repeats = 5;
+  const double cells = double(n) * n * n;
+  const auto uniform = [](int, int, int) { return std::array<double, 4>{1.0, 0.01, 0.0, 0.0}; };
+  const auto ours = periodic_solver({n, n, n}, palabos_case_magic());
+  ours->initialise_equilibrium(uniform);
+  const auto palabos = make_palabos_trt_case(n, kTau, uniform);
+  for (int s = 0; s < 3; ++s) {  // warm up: page faults, caches
+    ours->step();
+    palabos->step();
+  }
+  const int steps = timed_steps(cells);
+  std::vector<double> ours_mlups, palabos_mlups, ratios;
+  for (int repeat = 0; repeat < repeats; ++repeat) {
+    ours_mlups.push_back(cells * steps / seconds_for(steps, [&] { ours->step(); }) / 1e6);
+    palabos_mlups.push_back(cells * steps / seconds_for(steps, [&] { palabos->step(); }) / 1e6);
+    ratios.push_back(ours_mlups.back() / palabos_mlups.back());
+  }
+  std::printf("BENCH lbm_128_1t_palabos_case %.1f MLUPS\n", median(ours_mlups));
+  std::printf("BENCH palabos_128_1t %.1f MLUPS\n", median(palabos_mlups));
+  std::printf("BENCH lbm_vs_palabos_min %.2f ratio\n",
+              *std::min_element(ratios.begin(), ratios.end()));
+  std::printf("BENCH lbm_vs_palabos_max %.2f ratio\n",
+              *std::max_element(ratios.begin(), ratios.end()));
+  std::printf("BENCH lbm_vs_palabos %.2f ratio\n", median(ratios));
 }
 
 }  // namespace
@@ -82,5 +174,6 @@ int main() {
     }
   }
   std::printf("BENCH lbm_roofline_ratio %.3f ratio\n", best_ratio_128);
+  compare_with_palabos();
   return 0;
 }

@@ -41,6 +41,7 @@
 #include "contact/solid_block_map.h"
 #include "contact/stability_limits.h"
 #include "contact/vec3.h"
+#include "contact/wall_candidates.h"
 #include "contact/wall_contact.h"
 #include "lbm/voxel_geometry.h"
 
@@ -94,9 +95,12 @@ struct VoxelSumInput {
   double dt = 0.0;
   const VoxelSpringStore* springs = nullptr;  // last step's; null = no history
   // Optional block map of `geometry`: a particle whose voxel box touches no solid block (in
-  // open fluid) returns at once instead of scanning its (2 reach + 1)^3 voxels. The result is
-  // the same with or without it.
+  // open fluid) returns at once instead of scanning its (2 reach + 1)^3 voxels, and the scan
+  // visits only the solid runs of each row. The result is the same with or without it.
   const SolidBlockMap* blocks = nullptr;
+  // Optional per-particle list of the voxels in reach (wall_candidates.h), rebuilt here when
+  // the particle has left its skin. The result is the same with or without it.
+  WallCandidates* candidates = nullptr;
 };
 
 struct VoxelSumResult {

@@ -21,6 +21,7 @@
 
 #include "contact/solid_block_map.h"
 #include "contact/vec3.h"
+#include "contact/wall_candidates.h"
 #include "lbm/voxel_geometry.h"
 
 namespace contact {
@@ -49,6 +50,10 @@ class VoxelSurface {
  public:
   explicit VoxelSurface(const lbm::VoxelGeometry& geometry) : blocks_(geometry) {}
   void find(Vec3 centre, double reach, std::vector<SurfacePoint>& out) const;
+  // The same, from a particle's list of candidate voxels (wall_candidates.h), rebuilt here
+  // when the particle has left its skin: same points, without the scan every step.
+  void find(Vec3 centre, double reach, std::vector<SurfacePoint>& out,
+            WallCandidates& candidates) const;
   const lbm::VoxelGeometry& geometry() const { return blocks_.geometry(); }
   // The block map, for a wall model that scans the voxels itself (voxel_sum_wall.h).
   const SolidBlockMap& blocks() const { return blocks_; }
