@@ -6,16 +6,16 @@
 // output (line-buffered stdout, no Open MPI abort notice, no LIGGGHTS-PUBLIC joke line).
 #include <mpi.h>
 
-#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+
+#include <unistd.h>
 
 #include "input.h"
 #include "lammps.h"
 #include "plugin_common/stop_signals.h"
 #include "registry/style_registry.h"
-#include "signal_handling.h"
 #include "universe.h"
 
 namespace {
@@ -31,18 +31,28 @@ void hide_public_edition(LAMMPS_NS::Universe* universe) {
   if (at) std::memcpy(at, "public", 6);
 }
 
+// On ranks other than 0, LIGGGHTS 3.8's screen is stdout too, written only for errors
+// (Error::one), while its read_restart also printf()s "version 3 8" on every rank, which
+// mpirun may forward after rank 0's ERROR line. The screen keeps the terminal through its
+// own FILE; plain stdout, where only such stray prints land, goes to /dev/null.
+void drop_stray_output_of_other_ranks(LAMMPS_NS::LAMMPS* lammps) {
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  if (rank == 0) return;
+  FILE* terminal = fdopen(dup(STDOUT_FILENO), "w");
+  if (!terminal) return;
+  std::setvbuf(terminal, nullptr, _IOLBF, BUFSIZ);
+  if (lammps->screen == stdout) lammps->screen = terminal;
+  if (lammps->universe->uscreen == stdout) lammps->universe->uscreen = terminal;
+  if (!std::freopen("/dev/null", "w", stdout)) std::fputs("liggghts-lbm: stdout kept\n", stderr);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  // As in LIGGGHTS's main: SIGINT/SIGTERM ask for a clean stop, SIGUSR1 for a restart file.
-  struct sigaction int_action, usr1_action;
-  std::memset(&int_action, 0, sizeof(int_action));
-  std::memset(&usr1_action, 0, sizeof(usr1_action));
-  int_action.sa_handler = LAMMPS_NS::SignalHandler::int_handler;
-  sigaction(SIGINT, &int_action, nullptr);
-  sigaction(SIGTERM, &int_action, nullptr);
-  usr1_action.sa_handler = LAMMPS_NS::SignalHandler::usr1_handler;
-  sigaction(SIGUSR1, &usr1_action, nullptr);
+  // As in LIGGGHTS's main: SIGINT/SIGTERM ask for a clean stop, SIGUSR1 for a restart file
+  // (LIGGGHTS's handlers; a rank's late copy of an agreed stop is not a second one).
+  lbm_pore::install_stop_signal_handlers();
 
   // MPI's helper threads start blocking them: a signal sent to the process is taken by the
   // main thread, which fix lbm/pore lets take it only at a fluid step (stop_signals.h).
@@ -58,6 +68,7 @@ int main(int argc, char** argv) {
   std::setvbuf(stdout, nullptr, _IOLBF, BUFSIZ);
   auto* lammps = new LAMMPS_NS::LAMMPS(argc, argv, MPI_COMM_WORLD);
   hide_public_edition(lammps->universe);
+  drop_stray_output_of_other_ranks(lammps);
   lbm_pore::register_lbm_pore_styles(lammps);
   lammps->input->file();
   delete lammps;

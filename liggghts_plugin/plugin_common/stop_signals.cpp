@@ -3,6 +3,7 @@
 #include <pthread.h>
 
 #include <csignal>
+#include <cstring>
 
 #include "signal_handling.h"
 
@@ -18,7 +19,31 @@ sigset_t stop_signal_set() {
   return set;
 }
 
+// Signals this process received itself (the handler's only state: async-signal-safe).
+volatile std::sig_atomic_t own_stop_signals = 0;
+
+void filtered_int_handler(int signum) {
+  const bool first_own = own_stop_signals == 0;
+  own_stop_signals = own_stop_signals + 1;
+  // The stop was already agreed from another rank's copy of this signal.
+  if (first_own && LAMMPS_NS::SignalHandler::request_quit) return;
+  LAMMPS_NS::SignalHandler::int_handler(signum);
+}
+
+void install(int signum, void (*handler)(int)) {
+  struct sigaction action;
+  std::memset(&action, 0, sizeof(action));
+  action.sa_handler = handler;
+  sigaction(signum, &action, nullptr);
+}
+
 }  // namespace
+
+void install_stop_signal_handlers() {
+  install(SIGINT, filtered_int_handler);
+  install(SIGTERM, filtered_int_handler);
+  install(SIGUSR1, LAMMPS_NS::SignalHandler::usr1_handler);
+}
 
 void block_stop_signals() {
   const sigset_t set = stop_signal_set();

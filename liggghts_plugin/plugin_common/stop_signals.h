@@ -16,6 +16,15 @@
 
 namespace lbm_pore {
 
+// Installs the handlers, as LIGGGHTS's main does: LIGGGHTS's own for SIGUSR1, and for
+// SIGINT/SIGTERM LIGGGHTS's own behind one filter. mpirun (and a batch system) signals every
+// rank, a few milliseconds apart: a rank that already agreed to the stop another rank
+// requested (take_stop_requests) must not take its own copy of that signal for a second one,
+// which LIGGGHTS's handler answers with _Exit(1) and no restart. So the first SIGINT/SIGTERM
+// a process receives after its stop flag was set by agreement is that same request, and is
+// dropped; any later one force-quits as in LIGGGHTS.
+void install_stop_signal_handlers();
+
 // Blocks SIGINT, SIGTERM and SIGUSR1 in the calling thread (and so in every thread it
 // starts afterwards: MPI's helper threads when called before MPI_Init, OpenMP's workers).
 void block_stop_signals();
