@@ -94,6 +94,16 @@ def children(pid):
         return []
 
 
+def latest_row(log):
+    """The step of the last thermo row in a run's screen output so far (-1 before the first)."""
+    if not os.path.exists(log):
+        return -1
+    with open(log, errors="replace") as f:
+        rows = [line.split() for line in f if line[:1] == " " and line.split()[:1] != []]
+    steps = [int(r[0]) for r in rows if r[0].isdigit() and len(r) > 5]
+    return steps[-1] if steps else -1
+
+
 def wait_for(predicate, timeout, what):
     deadline = time.time() + timeout
     while time.time() < deadline:
@@ -109,19 +119,23 @@ def case_sigterm_resume(h):
     draw = random.Random(seed)
     whole = h.run("in.kill", kill_variables(KILL_STEPS), ranks=2)
     reference = final_row(whole.output)
-    loop = next(float(l.split()[3]) for l in whole.output.splitlines() if l.startswith("Loop time"))
-    # A moment within the first 80 % of the run's loop (measured by the uninterrupted run),
-    # and a second one up to 20 ms later for rank 1: a batch system signals the ranks of a
-    # job one after another, and ranks a step apart must still agree on when to stop.
-    delay = draw.uniform(0.05, 0.8) * loop
+    # A random moment between 5 % and 80 % of the run, found by the run's progress (its thermo
+    # rows, every 1000 steps) plus up to 50 ms, not by a time measured in another run: on a
+    # shared machine the run's speed changes (a delay drawn from the reference run's loop time
+    # once fell after the end of a faster run). Rank 1 up to 20 ms later: a batch system
+    # signals the ranks of a job one after another, and ranks a step apart must still agree.
+    row = 1000 * draw.randint(KILL_STEPS // 20000, (KILL_STEPS * 4) // 5000)
+    delay = draw.uniform(0.0, 0.05)
     stagger = draw.uniform(0.0, 0.02)
-    print(f"INFO seed {seed} (LBM_PORE_KILL_SEED={seed} repeats it): SIGTERM to rank 0 {delay:.3f} s "
-          f"into the run's loop, to rank 1 {stagger * 1000:.1f} ms later", flush=True)
+    print(f"INFO seed {seed} (LBM_PORE_KILL_SEED={seed} repeats it): SIGTERM to rank 0 {delay * 1000:.1f} ms "
+          f"after the row of step {row}, to rank 1 {stagger * 1000:.1f} ms later", flush=True)
     work = os.path.join(h.work, "interrupted")
     os.makedirs(work)
     run = start(h, "in.kill", kill_variables(KILL_STEPS), 2, work)
-    log = os.path.join(work, "log.liggghts")
-    header_seen = wait_for(lambda: os.path.exists(log) and "Step" in open(log).read(), 120, "the run's first row")
+    # The screen, not log.liggghts: the driver line-buffers stdout, the log is block-buffered
+    # (its rows appear thousands of steps late).
+    screen = os.path.join(work, "out.txt")
+    header_seen = wait_for(lambda: latest_row(screen) >= row, 300, f"the row of step {row}")
     time.sleep(delay)
     ranks = children(run.pid)
     for i, pid in enumerate(ranks):

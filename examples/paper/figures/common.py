@@ -3,6 +3,7 @@ with the paper's value written beside ours."""
 import os
 
 import matplotlib
+import numpy as np
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402,F401  (the figure modules draw with it)
 
@@ -11,7 +12,6 @@ from study_io import bursts, finished_runs, lattice_timing, p_out, thermo  # noq
 
 def times(run, steps):
     """DEM steps of a run as times in the script's unit (the paper's fluid step)."""
-    import numpy as np
     return np.asarray(steps, float) * lattice_timing(run["folder"])["dt_dem"]
 
 
