@@ -144,6 +144,7 @@ void FluidSolver::apply_wall_bounce_back() {
 }
 
 void FluidSolver::apply_open_boundaries() {
+  open_face_mass_[0] = open_face_mass_[1] = 0.0;
   if (drive_.kind == FlowDrive::kNone) return;
   const int a = drive_.axis;
   const Box& global = decomposition_.global;
@@ -163,6 +164,7 @@ void FluidSolver::apply_open_boundaries() {
     }
     inlet.momentum_density = parameters_.incompressible ? parameters_.rho0 : 0.0;
     apply_open_face(inlet, layout_, node_type_, f_);
+    open_face_mass_[0] = lbm::open_face_mass(inlet, layout_, node_type_, f_);
   }
   if (owned.hi[a] == global.hi[a]) {
     OpenFace outlet;
@@ -173,6 +175,7 @@ void FluidSolver::apply_open_boundaries() {
     outlet.value = drive_.outlet_density;
     outlet.momentum_density = parameters_.incompressible ? parameters_.rho0 : 0.0;
     apply_open_face(outlet, layout_, node_type_, f_);
+    open_face_mass_[1] = lbm::open_face_mass(outlet, layout_, node_type_, f_);
   }
 }
 

@@ -5,6 +5,25 @@
 
 namespace lbm {
 
+namespace {
+// Calls visit(cell) for every fluid node of the block on the face's plane.
+template <typename Visit>
+void for_face_nodes(const OpenFace& face, const BlockLayout& layout,
+                    const std::vector<std::uint8_t>& node_type, Visit visit) {
+  const int a = face.axis;
+  const int t1 = (a + 1) % 3, t2 = (a + 2) % 3;  // tangential axes
+  for (int s2 = 0; s2 < layout.size(t2); ++s2)
+    for (int s1 = 0; s1 < layout.size(t1); ++s1) {
+      int ijk[3];
+      ijk[a] = face.local_plane;
+      ijk[t1] = s1;
+      ijk[t2] = s2;
+      const std::size_t cell = layout.cell(ijk[0], ijk[1], ijk[2]);
+      if (node_type[cell] == kFluid) visit(cell);
+    }
+}
+}  // namespace
+
 void apply_open_face(const OpenFace& face, const BlockLayout& layout,
                      const std::vector<std::uint8_t>& node_type, PopulationField& f) {
   using L = D3Q19;
@@ -13,64 +32,74 @@ void apply_open_face(const OpenFace& face, const BlockLayout& layout,
   std::ptrdiff_t off[L::Q];
   for (int q = 0; q < L::Q; ++q) off[q] = layout.offset(L::c[q][0], L::c[q][1], L::c[q][2]);
 
-  for (int s2 = 0; s2 < layout.size(t2); ++s2)
-    for (int s1 = 0; s1 < layout.size(t1); ++s1) {
-      int ijk[3];
-      ijk[a] = face.local_plane;
-      ijk[t1] = s1;
-      ijk[t2] = s2;
-      const std::size_t cell = layout.cell(ijk[0], ijk[1], ijk[2]);
-      if (node_type[cell] != kFluid) continue;
+  for_face_nodes(face, layout, node_type, [&](std::size_t cell) {
+    // Populations after streaming: f_q(x) = f*_q(x - c_q).
+    double post[L::Q];
+    for (int q = 0; q < L::Q; ++q) post[q] = f.at(q, cell - off[q]);
 
-      // Populations after streaming: f_q(x) = f*_q(x - c_q).
-      double post[L::Q];
-      for (int q = 0; q < L::Q; ++q) post[q] = f.at(q, cell - off[q]);
-
-      double tangential_sum = 0.0, outgoing_sum = 0.0;
-      double transverse[3] = {0.0, 0.0, 0.0};
-      for (int q = 0; q < L::Q; ++q) {
-        const int cn = L::c[q][a] * face.inward;
-        if (cn == 0) {
-          tangential_sum += post[q];
-          transverse[t1] += post[q] * L::c[q][t1];
-          transverse[t2] += post[q] * L::c[q][t2];
-        } else if (cn < 0) {
-          outgoing_sum += post[q];
-        }
-      }
-      // u_n is the velocity along the inward normal; rho = T + O + I and m u_n = I - O with
-      // m = rho (standard) or rho0 (incompressible), so rho - m u_n = T + 2 O.
-      double rho, u_n, m;
-      const double known = tangential_sum + 2.0 * outgoing_sum;
-      if (face.momentum_density > 0.0) {
-        m = face.momentum_density;
-        if (face.kind == OpenFace::kVelocity) {
-          u_n = face.value * face.inward;
-          rho = known + m * u_n;
-        } else {
-          rho = face.value;
-          u_n = (rho - known) / m;
-        }
-      } else if (face.kind == OpenFace::kVelocity) {
-        u_n = face.value * face.inward;
-        rho = m = known / (1.0 - u_n);
-      } else {
-        rho = m = face.value;
-        u_n = 1.0 - known / rho;
-      }
-      double u[3] = {0.0, 0.0, 0.0};
-      u[a] = u_n * face.inward;
-      // Transverse momentum correction N_t = 1/2 sum_{c.n=0} f c_t - rho u_t / 3 (u_t = 0).
-      const double n1 = 0.5 * transverse[t1], n2 = 0.5 * transverse[t2];
-      for (int q = 0; q < L::Q; ++q) {
-        if (L::c[q][a] * face.inward <= 0) continue;  // known
-        const int qo = L::opposite(q);
-        const double cu = L::c[q][0] * u[0] + L::c[q][1] * u[1] + L::c[q][2] * u[2];
-        const double value =
-            post[qo] + 6.0 * L::w[q] * m * cu - (L::c[q][t1] * n1 + L::c[q][t2] * n2);
-        f.at(q, cell - off[q]) = static_cast<Real>(value);
+    double tangential_sum = 0.0, outgoing_sum = 0.0;
+    double transverse[3] = {0.0, 0.0, 0.0};
+    for (int q = 0; q < L::Q; ++q) {
+      const int cn = L::c[q][a] * face.inward;
+      if (cn == 0) {
+        tangential_sum += post[q];
+        transverse[t1] += post[q] * L::c[q][t1];
+        transverse[t2] += post[q] * L::c[q][t2];
+      } else if (cn < 0) {
+        outgoing_sum += post[q];
       }
     }
+    // u_n is the velocity along the inward normal; rho = T + O + I and m u_n = I - O with
+    // m = rho (standard) or rho0 (incompressible), so rho - m u_n = T + 2 O.
+    double rho, u_n, m;
+    const double known = tangential_sum + 2.0 * outgoing_sum;
+    if (face.momentum_density > 0.0) {
+      m = face.momentum_density;
+      if (face.kind == OpenFace::kVelocity) {
+        u_n = face.value * face.inward;
+        rho = known + m * u_n;
+      } else {
+        rho = face.value;
+        u_n = (rho - known) / m;
+      }
+    } else if (face.kind == OpenFace::kVelocity) {
+      u_n = face.value * face.inward;
+      rho = m = known / (1.0 - u_n);
+    } else {
+      rho = m = face.value;
+      u_n = 1.0 - known / rho;
+    }
+    double u[3] = {0.0, 0.0, 0.0};
+    u[a] = u_n * face.inward;
+    // Transverse momentum correction N_t = 1/2 sum_{c.n=0} f c_t - rho u_t / 3 (u_t = 0).
+    const double n1 = 0.5 * transverse[t1], n2 = 0.5 * transverse[t2];
+    for (int q = 0; q < L::Q; ++q) {
+      if (L::c[q][a] * face.inward <= 0) continue;  // known
+      const int qo = L::opposite(q);
+      const double cu = L::c[q][0] * u[0] + L::c[q][1] * u[1] + L::c[q][2] * u[2];
+      const double value =
+          post[qo] + 6.0 * L::w[q] * m * cu - (L::c[q][t1] * n1 + L::c[q][t2] * n2);
+      f.at(q, cell - off[q]) = static_cast<Real>(value);
+    }
+  });
+}
+
+double open_face_mass(const OpenFace& face, const BlockLayout& layout,
+                      const std::vector<std::uint8_t>& node_type, const PopulationField& f) {
+  using L = D3Q19;
+  const int a = face.axis;
+  std::ptrdiff_t off[L::Q];
+  for (int q = 0; q < L::Q; ++q) off[q] = layout.offset(L::c[q][0], L::c[q][1], L::c[q][2]);
+  double mass = 0.0;
+  for_face_nodes(face, layout, node_type, [&](std::size_t cell) {
+    for (int q = 1; q < L::Q; ++q) {
+      if (L::c[q][a] * face.inward > 0 && node_type[cell - off[q]] == kOpen)
+        mass += f.at(q, cell - off[q]);  // pulled from beyond the face
+      else if (L::c[q][a] * face.inward < 0 && node_type[cell + off[q]] == kOpen)
+        mass -= f.at(q, cell);  // sent beyond the face: lost
+    }
+  });
+  return mass;
 }
 
 }  // namespace lbm

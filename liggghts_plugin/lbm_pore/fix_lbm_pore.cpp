@@ -382,10 +382,14 @@ void FixLbmPore::fluid_step() {
   long long count = static_cast<long long>(particles_.num_owned()) +
                     static_cast<long long>(coupling_->mapping().moving_cells().size());
   MPI_Allreduce(MPI_IN_PLACE, &count, 1, MPI_LONG_LONG, MPI_SUM, world);
-  if (count == 0)
+  if (count == 0) {
     solver_->step();
-  else
+  } else {
     coupling_->step(particles_.view());
+    monitor_->record_coupling_mass(
+        coupling_->last_surface_mass(),
+        coupling_->last_mass_change().net_over(solver_->parameters().rho0), *solver_);
+  }
   store_loads(count > 0);
   ++fluid_steps_;
   timer_.count_fluid_step();

@@ -249,40 +249,58 @@ def case_bookkeeping(h):
     at x = 30. Lost = what remains: atoms LIGGGHTS dropped elsewhere (it does not stop on lost
     atoms with `thermo_modify lost ignore`), or a crossing the counter missed; must be 0.
     Fluid: mass in (f_pore[19]) - out (f_pore[20]) = change of the mass held (f_pore[21]) +
-    the mass the particles displace (f_pore[22]). Without particles it closes to 2e-3 of the
-    mass through (the start-up transient: the fluxes are sampled at the end layers' nodes,
-    not between them). With them it does not close: the run loses 0.57 particle volumes of
-    fluid mass per particle inserted (0.77 per particle removed at the outlet; measured with
-    bounce-back, d = 4 cells), which the covering and refill of nodes as spheres move
-    (coupling/spheres) do not conserve; the bound allows one particle volume per particle
-    inserted. (A finding for issue 14 item 5, not fixed here.)"""
+    the mass the particles displace (f_pore[22]) - what the coupling put into the fluid: the
+    moving surfaces' wall terms (f_pore[23]) and the refilled over the covered nodes' density
+    beyond rho0 (f_pore[24]). The fluxes are the populations that crossed the open faces, so
+    the budget closes to round-off, with and without particles. The surfaces' term is the
+    physics of the scene, not a loss: a sphere leaving through the outlet end draws in, at its
+    rear, the fluid that fills the space it frees while its front is already outside the
+    lattice (0.66 particle volumes per particle removed, measured with ka 2: LIGGGHTS drops it
+    up to half a skin past the end), and spheres touching each other or a wall push no fluid
+    where they touch (more in a clogging run) (doc/stability.md, "The fluid budget with moving
+    particles"). ka 20 makes it a clogging run: up to 5 particles deposit and the pressure
+    loss (f_pore[1]) rises to 0.13 (0.03 at the end of the same run with ka 2)."""
     steps = 100000  # 10^4 fluid steps at n_dem 10
     clean = thermo_rows(h.run("in.bookkeeping", {"steps": 50000, "insert_start": 10 ** 9}).output)
     first, last = clean[0], clean[-1]
     through = last["pore[19]"]
     defect = last["pore[19]"] - last["pore[20]"] - (last["pore[21]"] - first["pore[21]"])
-    check("bookkeeping_fluid_mass_without_particles", abs(defect) < 2e-3 * through,
-          f"{abs(defect) / through:.3g}", f"|in - out - change of held| < 2e-3 of the mass in ({through:.6g})")
-    rows = thermo_rows(h.run("in.bookkeeping", {"steps": steps}).output)
+    check("bookkeeping_fluid_mass_without_particles", abs(defect) < 1e-9 * through,
+          f"{abs(defect) / through:.3g}", f"|in - out - change of held| < 1e-9 of the mass in ({through:.6g})")
+    rows = thermo_rows(h.run("in.bookkeeping", {"steps": steps, "ka": 20}).output)
     last = rows[-1]
     check("bookkeeping_ran_10000_fluid_steps", last["Step"] == steps, last["Step"], f"== {steps}")
     lost = [r["inserted"] - r["Atoms"] - (r["pore[5]"] - r["beyond"]) for r in rows]
     removed = last["pore[5]"] - last["beyond"]
+    deposit = max(r["pore[7]"] for r in rows)
     print(f"INFO inserted {last['inserted']:.0f}, present {last['Atoms']:.0f}, removed at the outlet "
-          f"{removed:.0f}, largest deposit {max(r['pore[7]'] for r in rows):.0f} particles", flush=True)
+          f"{removed:.0f}, largest deposit {deposit:.0f} particles, largest pressure loss f_pore[1] "
+          f"{max(r['pore[1]'] for r in rows):.3g}", flush=True)
     check("bookkeeping_particles_flowed_through", last["inserted"] >= 30 and removed >= 10,
           f"{last['inserted']:.0f} inserted, {removed:.0f} removed", ">= 30 inserted, >= 10 removed at the outlet")
+    check("bookkeeping_run_clogs", deposit >= 3, f"{deposit:.0f} deposited at most", ">= 3")
     check("bookkeeping_particles_lost", all(l == 0 for l in lost), max(abs(l) for l in lost),
           "inserted - present - removed at the outlet == 0 at every row")
     volume = 4.0 / 3.0 * math.pi * 2.0 ** 3  # d = 4 cells, rho = 1, dx = 1: mass units
     through = last["pore[19]"]
-    defect = last["pore[19]"] - last["pore[20]"] - (last["pore[21]"] - rows[0]["pore[21]"] + last["pore[22]"])
-    bound = 2e-3 * through + volume * last["inserted"]
+    surfaces, refill = last["pore[23]"], last["pore[24]"]
+    worst = 0.0
+    for r in rows:
+        booked = r["pore[21]"] - rows[0]["pore[21]"] + r["pore[22]"] - r["pore[23]"] - r["pore[24]"]
+        worst = max(worst, abs(r["pore[19]"] - r["pore[20]"] - booked))
     print(f"INFO fluid mass: in {through:.6g}, out {last['pore[20]']:.6g}, held {rows[0]['pore[21]']:.6g} -> "
-          f"{last['pore[21]']:.6g}, displaced {last['pore[22]']:.6g}; defect {defect:.4g} = "
-          f"{defect / volume / max(removed, 1):.3g} particle volumes per particle removed", flush=True)
-    check("bookkeeping_fluid_mass_with_particles", abs(defect) < bound, f"{abs(defect):.4g}",
-          f"< 2e-3 of the mass in + one particle volume per particle inserted = {bound:.4g}")
+          f"{last['pore[21]']:.6g}, displaced {last['pore[22]']:.6g}, moving surfaces {surfaces:.6g} "
+          f"({-surfaces / volume / max(removed, 1):.3g} particle volumes per particle removed), "
+          f"refill {refill:.4g}; largest defect {worst:.3g}", flush=True)
+    check("bookkeeping_fluid_mass_with_particles", worst < 1e-9 * through, f"{worst / through:.3g}",
+          f"|in - out - (change of held + displaced - surfaces - refill)| < 1e-9 of the mass in "
+          f"({through:.6g}) at every row")
+    # The surfaces' term is of the size of the particle volume that left through the outlet
+    # end and of the contacts (measured 1.1 particle volumes per particle removed), not zero
+    # and not of another order.
+    check("bookkeeping_surface_mass_is_exits_and_contacts",
+          0.3 * volume * removed < -surfaces < 2.0 * volume * removed,
+          f"{-surfaces / volume / max(removed, 1):.3g}", "between 0.3 and 2 particle volumes per particle removed")
 
 
 if __name__ == "__main__":

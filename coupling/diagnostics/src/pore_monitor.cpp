@@ -113,12 +113,23 @@ double PoreMonitor::fluid_mass_unit() const {
   return units_.inputs().rho * dx * dx * dx;
 }
 
-// plane_flux is sum(rho u) / rho0 over the plane, the mass that crosses it in one fluid step
-// in cells of reference density (the inlet and outlet planes are the lattice's end layers).
+// The mass the step's streaming moved through the open faces (FluidSolver::open_face_mass:
+// exact, from the populations that crossed them), over all ranks.
 void PoreMonitor::add_plane_masses(const lbm::FluidSolver& solver) {
-  const int last = solver.decomposition().global.size(setup_.pore.axis) - 1;
-  values_[kFluidMassIn] += lbm::plane_flux(solver, setup_.pore.axis, 0) * fluid_mass_unit();
-  values_[kFluidMassOut] += lbm::plane_flux(solver, setup_.pore.axis, last) * fluid_mass_unit();
+  double faces[2] = {solver.open_face_mass(0), solver.open_face_mass(1)};
+  solver.decomposition().comm.sum(faces, 2);
+  const double unit = fluid_mass_unit() / solver.parameters().rho0;
+  values_[kFluidMassIn] += faces[0] * unit;
+  values_[kFluidMassOut] -= faces[1] * unit;
+}
+
+void PoreMonitor::record_coupling_mass(double surface_mass, double refill_mass,
+                                       const lbm::FluidSolver& solver) {
+  double sums[2] = {surface_mass, refill_mass};
+  solver.decomposition().comm.sum(sums, 2);
+  const double unit = fluid_mass_unit() / solver.parameters().rho0;
+  values_[kParticleSurfaceMass] += sums[0] * unit;
+  values_[kParticleRefillMass] += sums[1] * unit;
 }
 
 std::optional<BurstRecord> PoreMonitor::record_fluid_step(const lbm::FluidSolver& solver, long long fluid_step,

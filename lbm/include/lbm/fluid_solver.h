@@ -96,7 +96,13 @@ class FluidSolver {
   double density(std::size_t cell) const;
   std::array<double, 3> velocity(std::size_t cell) const;
 
+  // Mass the streaming of the step moves into this rank's block through the inlet (face 0)
+  // and the outlet (face 1) faces, set by apply_open_boundaries (lbm::open_face_mass);
+  // 0 where the rank has no such face or the drive is none. Negative = outflow.
+  double open_face_mass(int face) const { return open_face_mass_[face]; }
+
  private:
+  double open_face_mass_[2] = {0.0, 0.0};
   // The equilibrium of the chosen model (FluidParameters::incompressible).
   double equilibrium_at(int q, double rho, const std::array<double, 3>& u) const;
   void build_node_types();

@@ -29,4 +29,12 @@ struct OpenFace {
 void apply_open_face(const OpenFace& face, const BlockLayout& layout,
                      const std::vector<std::uint8_t>& node_type, PopulationField& f);
 
+// Mass the next streaming moves into the block through one open face: what the owned fluid
+// nodes on it pull from the ghosts beyond it (the values apply_open_face wrote) less what
+// they send there (their post-collision populations pointing out of the lattice, which no
+// node pulls). Exact, unlike rho u sampled at the nodes: call it after the last stage that
+// writes the face's slots (FluidSolver::apply_open_boundaries does). Negative = outflow.
+double open_face_mass(const OpenFace& face, const BlockLayout& layout,
+                      const std::vector<std::uint8_t>& node_type, const PopulationField& f);
+
 }  // namespace lbm

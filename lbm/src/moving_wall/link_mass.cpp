@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "lbm/d3q19.h"
+#include "lbm/node_type.h"
 #include "lbm/moving_wall/moving_wall_scheme.h"
 
 namespace lbm::moving_wall {
@@ -39,17 +40,34 @@ LinkMassDefect link_mass_defect(const std::vector<BoundaryLink>& links, double r
   return total;
 }
 
+double moving_surface_mass(const std::vector<BoundaryLink>& links, double rho0) {
+  double mass = 0.0;
+  for (const BoundaryLink& link : links) mass -= wall_term(link.q, rho0, link.wall_velocity);
+  return mass;
+}
+
 void restore_link_mass(const std::vector<BoundaryLink>& links, const BlockLayout& layout,
+                       const std::vector<std::uint8_t>& node_type,
                        const std::vector<double>& per_link, PopulationField& f) {
   // The defects are all measured before any is removed: removing one writes slots that
   // another link of the same node reads as its returned population.
   for (std::size_t l = 0; l < links.size(); ++l) {
     const std::size_t x = links[l].fluid_cell;
+    double at_rest = 0.0;
     // Population p reaches x from x - c_p in the next (pull) streaming.
     for (int p = 0; p < L::Q; ++p) {
-      Real& slot = f.at(p, x - link_offset(layout, p));
+      const std::size_t from = x - link_offset(layout, p);
+      // A ghost beyond an open face is written after this stage (the open boundary fills
+      // it): its share goes on x's own rest population, so that x's mass changes by the
+      // whole defect and the budget's books (PoreMonitor) stay exact.
+      if (node_type[from] == kOpen) {
+        at_rest += L::w[p] * per_link[l];
+        continue;
+      }
+      Real& slot = f.at(p, from);
       slot = static_cast<Real>(slot - L::w[p] * per_link[l]);
     }
+    if (at_rest != 0.0) f.at(0, x) = static_cast<Real>(f.at(0, x) - at_rest);
   }
 }
 

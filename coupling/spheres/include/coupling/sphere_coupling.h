@@ -57,6 +57,10 @@ class SphereCoupling {
   void add_loads(std::size_t count, double* force, double* torque = nullptr) const;
 
   const MassChange& last_mass_change() const { return mass_; }
+  // Mass the moving surfaces gave the fluid in the last step (this rank's links): the
+  // moving-wall terms (lbm::moving_wall::moving_surface_mass), plus the link defect where the
+  // correction is off.
+  double last_surface_mass() const { return surface_mass_; }
   // Mass the moving-wall links of the last step created, measured before the correction
   // (removed again when options().conserve_link_mass).
   const lbm::moving_wall::LinkMassDefect& last_link_defect() const { return link_defect_; }
@@ -75,6 +79,7 @@ class SphereCoupling {
   HydrodynamicLoads loads_;
   MassChange mass_;
   lbm::moving_wall::LinkMassDefect link_defect_;
+  double surface_mass_ = 0.0;
   std::vector<double> defect_per_link_;  // reused every step
   StageTimes times_;
 };

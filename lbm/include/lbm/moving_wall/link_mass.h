@@ -24,6 +24,7 @@
 // of accuracy is kept (the accuracy tests measure it). Purely local: every slot it writes is
 // pulled by x alone, so no halo exchange and no global sum; halo slots written are the
 // copies x pulls.
+#include <cstdint>
 #include <vector>
 
 #include "lbm/block_layout.h"
@@ -46,8 +47,20 @@ LinkMassDefect link_mass_defect(const std::vector<BoundaryLink>& links, double r
                                 const BlockLayout& layout, const PopulationField& f,
                                 std::vector<double>* per_link = nullptr);
 
+// Mass the moving-wall terms of the links give the fluid in one step: -sum_l 6 w_q rho0 c_q.u_w,
+// what half-way bounce-back (and, with the correction above, every scheme) adds to the nodes
+// next to a moving surface. Over the links of a sphere whose surface is all in the fluid it
+// is zero for a translation (the terms of opposite faces cancel exactly) and small for a
+// rotation; it is not zero where part of the surface meets no fluid node: a sphere leaving
+// the lattice through an open end (its rear draws fluid in, its front is outside), or one in
+// contact with a wall or another sphere. The fluid budget books it (doc/stability.md).
+double moving_surface_mass(const std::vector<BoundaryLink>& links, double rho0);
+
 // Removes the measured defects as described above; per_link from link_mass_defect.
+// Slots in a ghost beyond an open face (rewritten by the open boundary stage after this one)
+// are not written; their share goes on x's rest population.
 void restore_link_mass(const std::vector<BoundaryLink>& links, const BlockLayout& layout,
+                       const std::vector<std::uint8_t>& node_type,
                        const std::vector<double>& per_link, PopulationField& f);
 
 }  // namespace lbm::moving_wall

@@ -62,13 +62,20 @@ class PoreMonitor {
     kLargestPressureLoss, // the largest P / P_out of the run so far
     kBurstCount,          // erosive bursts recorded so far
     // The fluid's mass budget (mass units; issue 14): mass in = mass out + change of mass held.
-    kFluidMassIn,         // mass through the inlet plane, sum over fluid steps (cumulative)
-    kFluidMassOut,        // ... and through the outlet plane
+    kFluidMassIn,         // mass through the inlet face, sum over fluid steps (cumulative;
+                          // the populations that crossed it, lbm::open_face_mass)
+    kFluidMassOut,        // ... and out through the outlet face
     kFluidMassHeld,       // mass of the fluid nodes of the lattice now
     // Mass of the fluid the particles displace: their lattice nodes at the reference density.
     // A node a particle covers takes its mass out of kFluidMassHeld, a refilled one brings
     // mass back: in - out = the change of held + displaced.
     kParticleDisplacedMass,
+    // What the particles' coupling put into the fluid beyond that (cumulative): the moving
+    // surfaces' wall terms (nonzero where a surface meets no fluid: a particle leaving through
+    // an open end, one in contact) and the covered and refilled nodes' density over rho0.
+    // The budget: in - out = change of held + displaced - surfaces - refill.
+    kParticleSurfaceMass,
+    kParticleRefillMass,
     kCount
   };
 
@@ -81,6 +88,9 @@ class PoreMonitor {
                         double local_force_x, const lbm::Communicator& comm);
   // The largest particle shift of the step (cells, already reduced over ranks).
   void record_particle_shift(double cells) { values_[kMaxParticleShift] = cells; }
+  // After a coupled fluid step (collective): this rank's surface and refill mass of the step
+  // (SphereCoupling::last_surface_mass, last_mass_change().net_over(rho0)), lattice units.
+  void record_coupling_mass(double surface_mass, double refill_mass, const lbm::FluidSolver& solver);
   // The fluid advanced: the fluid values are recomputed when next read.
   void fluid_changed() { fluid_stale_ = true; }
 

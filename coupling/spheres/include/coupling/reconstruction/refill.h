@@ -21,6 +21,12 @@ struct MassChange {
   double refilled = 0.0;   // sum rho of refilled nodes
   long long num_covered = 0, num_refilled = 0;
   double net() const { return refilled - covered; }
+  // What the step added to the fluid beyond the reference density rho0 per node: a covered
+  // node takes its own density out of the fluid (the budget books rho0 of it as displaced
+  // by the particle), a refilled one brings its refill density back (rho0 booked).
+  double net_over(double rho0) const {
+    return net() - rho0 * double(num_refilled - num_covered);
+  }
 };
 
 // Writes the refill into the owned uncovered nodes (ghosts get theirs from the halo
