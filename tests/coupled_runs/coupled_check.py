@@ -171,17 +171,24 @@ def case_outputs(h):
 
 
 def case_mpi_splits(h):
-    """1 rank against 3 (processors 3 1 1) and 4 (2 2 1, 1 2 2; oversubscribed on 2 cores):
-    the two particles of in.transit cross the x splits and particle 2 straddles the y split,
-    so fluid halos, ghost particles and their reverse-communicated loads cross every kind of
-    subdomain face (x, y, z and the edges of the 2 x 2 grids). Same bound as pore_parallel."""
+    """1 rank against 3 (processors 3 1 1) and 4 (2 2 1, 1 2 2; oversubscribed on 2 cores).
+    In in.transit a weak gravity along (0, 1, 1) makes particle 1 sink across y = 10 and
+    z = 10 while the flow carries it across x = 10 and x = 15, so that it changes owner across
+    an x, a y and a z face of the grids (checked in the serial run), passing near the y-z edge
+    of the 1 2 2 grid, and particle 2 stays across the y split: fluid halos, ghost particles
+    and their reverse-communicated loads cross every kind of subdomain face. Same bound as
+    pore_parallel."""
     variables = {"steps": 100000}
     serial = thermo_rows(h.run("in.transit", dict(variables, px=1)).output)
+    for axis, column, split_at in (("x", "x1", 15.0), ("y", "y1", 10.0), ("z", "z1", 10.0)):
+        start, end = serial[0][column], serial[-1][column]
+        check(f"mpi_particle_1_crosses_the_{axis}_split", start < split_at < end,
+              f"{start:.3g} -> {end:.3g}", f"from below {split_at:g} to above it")
     for px, py, pz in ((3, 1, 1), (2, 2, 1), (1, 2, 2)):
         split = thermo_rows(h.run("in.transit", dict(variables, px=px, py=py, pz=pz), ranks=px * py * pz).output)
         check(f"mpi_{px}{py}{pz}_same_rows", len(split) == len(serial) > 5, f"{len(split)} vs {len(serial)}",
               "same number of thermo rows (> 5)")
-        for column in ("p", "fx", "x1", "y2", "x2"):
+        for column in ("p", "fx", "x1", "y1", "z1", "y2", "x2"):
             scale = max(abs(r[column]) for r in serial)
             worst = max(abs(a[column] - b[column]) for a, b in zip(serial, split)) / scale
             check(f"mpi_{px}{py}{pz}_max_difference_{column}", worst < 1e-9, f"{worst:.3g}",
