@@ -175,6 +175,17 @@ void voxel_sum_wall_force(const WallContactParams& params, const VoxelSumInput& 
   // The centre in lattice coordinates, as distance_to_voxel computes it.
   double u[3];
   for (int a = 0; a < 3; ++a) u[a] = (in.centre[a] - origin[a]) / spacing;
+  // A particle whose candidate list (built with a skin) is empty has no wall in reach: the
+  // particles in open fluid, most of them, cost one distance test.
+  WallCandidates* const candidates = in.candidates;
+  if (candidates != nullptr) {
+    if (!candidates->covers(in.centre, reach)) {
+      candidates->restart(in.centre, reach + kWallCandidateSkin * spacing);
+      for_each_solid_voxel_near(geometry, in.blocks, u, candidates->reach,
+                                [&](int i, int j, int k) { candidates->voxels.push_back({i, j, k}); });
+    }
+    if (candidates->voxels.empty()) return;
+  }
   const bool keep_springs = params.friction.mu > 0.0;
   // What the law needs of the particle alone, once for all its voxels.
   const WallParticleTerms terms = wall_particle_terms(params, in.radius, in.mass);
@@ -202,15 +213,9 @@ void voxel_sum_wall_force(const WallContactParams& params, const VoxelSumInput& 
     out.max_overlap_ratio = std::max(out.max_overlap_ratio, -contact.gap / in.radius);
     if (keep_springs && !out.springs.add(key, result.spring)) ++out.springs_dropped;
   };
-  if (in.candidates == nullptr) {
+  if (candidates == nullptr) {
     for_each_solid_voxel_near(geometry, in.blocks, u, reach, add_voxel);
     return;
-  }
-  WallCandidates& candidates = *in.candidates;
-  if (!candidates.covers(in.centre, reach)) {
-    candidates.restart(in.centre, reach + kWallCandidateSkin * spacing);
-    for_each_solid_voxel_near(geometry, in.blocks, u, candidates.reach,
-                              [&](int i, int j, int k) { candidates.voxels.push_back({i, j, k}); });
   }
   // The voxels of this query's own box that pass the scan's cull, as the scan would see them
   // (the list holds those of reach + skin: most of its voxels are beyond reach now, and the
@@ -218,7 +223,7 @@ void voxel_sum_wall_force(const WallContactParams& params, const VoxelSumInput& 
   const VoxelBox box(geometry, u, reach / spacing);
   if (box.empty) return;
   const double beyond = culled_beyond(reach / spacing);
-  for (const auto& v : candidates.voxels)
+  for (const auto& v : candidates->voxels)
     if (box.contains(v) &&
         squared_gap(u[2], v[2]) + squared_gap(u[1], v[1]) + squared_gap(u[0], v[0]) <= beyond)
       add_voxel(v[0], v[1], v[2]);
