@@ -250,11 +250,12 @@ void FixLbmPore::setup(int vflag) {
   post_force(vflag);
 }
 
-// The group's pairs of the neighbour list, collected once per DEM step (the list changes
-// only when LIGGGHTS rebuilds it, at the start of a step).
+// The group's pairs of the neighbour list, collected when LIGGGHTS has rebuilt it: the list,
+// the atoms' order and their ghosts change only then (neighbor->lastcall is the step of the
+// last build; setup() forgets the pairs, for a rebuild at a run's start on the same step).
 void FixLbmPore::collect_group_pairs() {
-  if (pairs_step_ == update->ntimestep || !list_) return;
-  pairs_step_ = update->ntimestep;
+  if (pairs_step_ == neighbor->lastcall || !list_) return;
+  pairs_step_ = neighbor->lastcall;
   pairs_.clear();
   const int* mask = atom->mask;
   for (int ii = 0; ii < list_->inum; ++ii) {

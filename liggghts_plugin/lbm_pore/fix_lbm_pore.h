@@ -116,7 +116,7 @@ class FixLbmPore : public Fix {
   std::vector<double> lubrication_before_;          // scratch: f before the lubrication
   std::vector<double*> fluid_velocity_rows_;        // rows of state_ for the particle gather
   std::vector<coupling::ParticlePair> pairs_;       // the group's pairs of the neighbour list
-  long long pairs_step_ = -1;                       // the DEM step pairs_ was collected at
+  long long pairs_step_ = -1;                       // the neighbour build pairs_ is from (step)
   std::vector<contact::SurfacePoint> wall_points_;  // scratch of the wall searches
   std::vector<char> bonded_atoms_, bonded_;         // scratch of the deposit count
   class NeighList* list_ = nullptr;

@@ -24,6 +24,8 @@ WallForce SmoothWallModel::apply(int i, const WallParticle& particle) {
     return out;
   }
   out.touching = true;
+  const contact::WallParticleTerms terms =
+      contact::wall_particle_terms(params_, particle.radius, particle.mass);
   double fresh[kStride] = {};
   bool used[kMaxContacts] = {};
   int stored = 0;
@@ -45,7 +47,7 @@ WallForce SmoothWallModel::apply(int i, const WallParticle& particle) {
         break;
       }
     }
-    const contact::WallContactResult result = contact::wall_contact_force(params_, in);
+    const contact::WallContactResult result = contact::wall_contact_force(params_, terms, in);
     out.force += result.force;
     if (in.gap < 0.0) out.max_overlap_ratio = std::max(out.max_overlap_ratio, -in.gap / in.radius);
     if (!result.active) continue;

@@ -16,12 +16,10 @@ WallForce VoxelSumWallModel::apply(int i, const WallParticle& particle) {
   in.springs = &springs_[i];
   in.blocks = &blocks_;
   in.candidates = &candidates_[i];
-  const contact::VoxelSumResult result = contact::voxel_sum_wall_force(params_, in);
-  // Out of reach of every voxel the springs are forgotten (without copying an empty store).
-  if (result.contacts == 0)
-    springs_[i].count = 0;
-  else
-    springs_[i] = result.springs;
+  contact::VoxelSumResult& result = result_;
+  contact::voxel_sum_wall_force(params_, in, result);
+  // The springs in use replace the atom's (a store copies only those; none out of reach).
+  springs_[i] = result.springs;
   WallForce out;
   out.touching = result.contacts > 0;
   out.force = result.force;

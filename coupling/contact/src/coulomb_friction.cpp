@@ -4,7 +4,17 @@
 
 namespace contact {
 
+double tangential_damping(const FrictionParams& params, double effective_mass) {
+  // The dashpot of the tangential oscillator, damped like the normal one (dash_dot.h).
+  return damping_coefficient(DashDotParams{params.k_t, params.damping_ratio}, effective_mass);
+}
+
 FrictionResult coulomb_friction(const FrictionParams& params, const FrictionInput& in) {
+  return coulomb_friction(params, tangential_damping(params, in.effective_mass), in);
+}
+
+FrictionResult coulomb_friction(const FrictionParams& params, double gamma_t,
+                                const FrictionInput& in) {
   FrictionResult out;
   // Rotate the stored spring into the current tangent plane, keeping its length.
   Vec3 spring = tangential_part(in.spring, in.normal);
@@ -15,9 +25,6 @@ FrictionResult coulomb_friction(const FrictionParams& params, const FrictionInpu
   const Vec3 slip_velocity = tangential_part(in.relative_velocity, in.normal);
   spring += in.dt * slip_velocity;
 
-  // The dashpot of the tangential oscillator, damped like the normal one (dash_dot.h).
-  const double gamma_t =
-      damping_coefficient(DashDotParams{params.k_t, params.damping_ratio}, in.effective_mass);
   Vec3 force = -params.k_t * spring - gamma_t * slip_velocity;
   const double limit = params.mu * in.normal_force;
   const double magnitude = norm(force);

@@ -11,6 +11,15 @@ const Vec3* VoxelSpringStore::find(std::int64_t voxel) const {
   return nullptr;
 }
 
+const Vec3* VoxelSpringStore::find(std::int64_t voxel, int& hint) const {
+  for (int n = 0, s = hint < count ? hint : 0; n < count; ++n, s = s + 1 < count ? s + 1 : 0)
+    if (slots[s].voxel == voxel) {
+      hint = s + 1;
+      return &slots[s].spring;
+    }
+  return nullptr;
+}
+
 bool VoxelSpringStore::add(std::int64_t voxel, Vec3 spring) {
   if (count >= kVoxelSpringCapacity) return false;
   slots[count].voxel = voxel;
@@ -47,17 +56,22 @@ bool unpack_spring_store(const double* in, VoxelSpringStore& store) {
 
 VoxelDistance distance_to_voxel(const lbm::VoxelGeometry& geometry, Vec3 centre, int i, int j,
                                 int k) {
-  // Lattice coordinates: the cube of voxel (i,j,k) spans [i - 1/2, i + 1/2] (and so on).
   const double spacing = geometry.spacing();
   const auto& origin = geometry.origin();
+  double u[3];
+  for (int a = 0; a < 3; ++a) u[a] = (centre[a] - origin[a]) / spacing;
+  return distance_to_voxel(spacing, u, i, j, k);
+}
+
+VoxelDistance distance_to_voxel(double spacing, const double u[3], int i, int j, int k) {
+  // Lattice coordinates: the cube of voxel (i,j,k) spans [i - 1/2, i + 1/2] (and so on).
   const int cell[3] = {i, j, k};
   Vec3 offset;  // from the cube's closest point to the centre, in cells
   Vec3 from_voxel_centre;
   for (int a = 0; a < 3; ++a) {
-    const double u = (centre[a] - origin[a]) / spacing;
-    const double closest = std::clamp(u, cell[a] - 0.5, cell[a] + 0.5);
-    offset[a] = u - closest;
-    from_voxel_centre[a] = u - cell[a];
+    const double closest = std::clamp(u[a], cell[a] - 0.5, cell[a] + 0.5);
+    offset[a] = u[a] - closest;
+    from_voxel_centre[a] = u[a] - cell[a];
   }
   VoxelDistance out;
   const double length = norm(offset);
@@ -94,6 +108,12 @@ struct VoxelBox {
   }
 };
 
+// The cull of voxels beyond reach by their per-axis gaps (below): squared, in cells, with a
+// margin far above the rounding of both it and the exact distance.
+double culled_beyond(double reach_cells) { return reach_cells * reach_cells * (1.0 + 1e-9); }
+// squared_gap_to_cell's voxel spans [cell, cell + 1): here the cube is centred on the cell.
+double squared_gap(double coordinate, int cell) { return squared_gap_to_cell(coordinate + 0.5, cell); }
+
 // Calls visit(i, j, k) for every solid voxel of the box that may lie within `reach` of the
 // centre at lattice coordinates u, in increasing k, j, i.
 template <class Visit>
@@ -110,23 +130,19 @@ void for_each_solid_voxel_near(const lbm::VoxelGeometry& geometry, const SolidBl
   // per-axis gaps alone (squared, in cells), before the caller's exact distance. The margin is
   // far above the rounding of both, so every voxel the exact test keeps is still visited, in
   // the same order: the sum is bit-identical to scanning the whole box.
-  const double culled_beyond = reach_cells * reach_cells * (1.0 + 1e-9);
-  // squared_gap_to_cell's voxel spans [cell, cell + 1): here the cube is centred on the cell.
-  const auto squared_gap = [](double coordinate, int cell) {
-    return squared_gap_to_cell(coordinate + 0.5, cell);
-  };
+  const double beyond = culled_beyond(reach_cells);
   for (int k = lo[2]; k <= hi[2]; ++k) {
     const double gap_z = squared_gap(u[2], k);
-    if (gap_z > culled_beyond) continue;
+    if (gap_z > beyond) continue;
     for (int j = lo[1]; j <= hi[1]; ++j) {
       const double gap_yz = gap_z + squared_gap(u[1], j);
-      if (gap_yz > culled_beyond) continue;
+      if (gap_yz > beyond) continue;
       // The row's cells within the remaining reach, one more on each side against rounding.
-      const double half_chord = std::sqrt(culled_beyond - gap_yz) + 0.5;
+      const double half_chord = std::sqrt(beyond - gap_yz) + 0.5;
       const int first = std::max(lo[0], static_cast<int>(std::ceil(u[0] - half_chord)) - 1);
       const int last = std::min(hi[0], static_cast<int>(std::floor(u[0] + half_chord)) + 1);
       const auto in_reach = [&](int i) {
-        if (gap_yz + squared_gap(u[0], i) <= culled_beyond) visit(i, j, k);
+        if (gap_yz + squared_gap(u[0], i) <= beyond) visit(i, j, k);
       };
       if (blocks == nullptr) {
         for (int i = first; i <= last; ++i)
@@ -142,6 +158,16 @@ void for_each_solid_voxel_near(const lbm::VoxelGeometry& geometry, const SolidBl
 
 VoxelSumResult voxel_sum_wall_force(const WallContactParams& params, const VoxelSumInput& in) {
   VoxelSumResult out;
+  voxel_sum_wall_force(params, in, out);
+  return out;
+}
+
+void voxel_sum_wall_force(const WallContactParams& params, const VoxelSumInput& in,
+                          VoxelSumResult& out) {
+  out.force = Vec3{};
+  out.springs.count = 0;
+  out.contacts = out.sliding = out.springs_dropped = 0;
+  out.max_overlap_ratio = 0.0;
   const lbm::VoxelGeometry& geometry = in.geometry;
   const double spacing = geometry.spacing();
   const auto& origin = geometry.origin();
@@ -149,13 +175,27 @@ VoxelSumResult voxel_sum_wall_force(const WallContactParams& params, const Voxel
   // The centre in lattice coordinates, as distance_to_voxel computes it.
   double u[3];
   for (int a = 0; a < 3; ++a) u[a] = (in.centre[a] - origin[a]) / spacing;
+  // A particle whose candidate list (built with a skin) is empty has no wall in reach: the
+  // particles in open fluid, most of them, cost one distance test.
+  WallCandidates* const candidates = in.candidates;
+  if (candidates != nullptr) {
+    if (!candidates->covers(in.centre, reach)) {
+      candidates->restart(in.centre, reach + kWallCandidateSkin * spacing);
+      for_each_solid_voxel_near(geometry, in.blocks, u, candidates->reach,
+                                [&](int i, int j, int k) { candidates->voxels.push_back({i, j, k}); });
+    }
+    if (candidates->voxels.empty()) return;
+  }
   const bool keep_springs = params.friction.mu > 0.0;
+  // What the law needs of the particle alone, once for all its voxels.
+  const WallParticleTerms terms = wall_particle_terms(params, in.radius, in.mass);
+  int spring_hint = 0;  // where the next voxel's spring of last step probably is
   // Eq. 6's term of solid voxel (i, j, k), if it is within reach.
   const auto add_voxel = [&](int i, int j, int k) {
-    const VoxelDistance voxel = distance_to_voxel(geometry, in.centre, i, j, k);
+    const VoxelDistance voxel = distance_to_voxel(spacing, u, i, j, k);
     if (voxel.distance > reach) return;
     const auto key = static_cast<std::int64_t>(geometry.index(i, j, k));
-    const Vec3* stored = in.springs != nullptr ? in.springs->find(key) : nullptr;
+    const Vec3* stored = in.springs != nullptr ? in.springs->find(key, spring_hint) : nullptr;
 
     WallContactInput contact;
     contact.normal = voxel.normal;
@@ -165,7 +205,7 @@ VoxelSumResult voxel_sum_wall_force(const WallContactParams& params, const Voxel
     contact.velocity = in.velocity;
     contact.spring = stored != nullptr ? *stored : Vec3{};
     contact.dt = in.dt;
-    const WallContactResult result = wall_contact_force(params, contact);
+    const WallContactResult result = wall_contact_force(params, terms, contact);
     if (!result.active) return;
     out.force += result.force;
     ++out.contacts;
@@ -173,22 +213,20 @@ VoxelSumResult voxel_sum_wall_force(const WallContactParams& params, const Voxel
     out.max_overlap_ratio = std::max(out.max_overlap_ratio, -contact.gap / in.radius);
     if (keep_springs && !out.springs.add(key, result.spring)) ++out.springs_dropped;
   };
-  if (in.candidates == nullptr) {
+  if (candidates == nullptr) {
     for_each_solid_voxel_near(geometry, in.blocks, u, reach, add_voxel);
-    return out;
+    return;
   }
-  WallCandidates& candidates = *in.candidates;
-  if (!candidates.covers(in.centre, reach)) {
-    candidates.restart(in.centre, reach + kWallCandidateSkin * spacing);
-    for_each_solid_voxel_near(geometry, in.blocks, u, candidates.reach,
-                              [&](int i, int j, int k) { candidates.voxels.push_back({i, j, k}); });
-  }
-  // The voxels of this query's own box, as the scan would see them.
+  // The voxels of this query's own box that pass the scan's cull, as the scan would see them
+  // (the list holds those of reach + skin: most of its voxels are beyond reach now, and the
+  // cull drops them before the exact distance's square root and division).
   const VoxelBox box(geometry, u, reach / spacing);
-  if (box.empty) return out;
-  for (const auto& v : candidates.voxels)
-    if (box.contains(v)) add_voxel(v[0], v[1], v[2]);
-  return out;
+  if (box.empty) return;
+  const double beyond = culled_beyond(reach / spacing);
+  for (const auto& v : candidates->voxels)
+    if (box.contains(v) &&
+        squared_gap(u[2], v[2]) + squared_gap(u[1], v[1]) + squared_gap(u[0], v[0]) <= beyond)
+      add_voxel(v[0], v[1], v[2]);
 }
 
 double voxel_sum_resting_stiffness(const WallContactParams& params, double radius) {

@@ -28,7 +28,11 @@ double LubricationCorrection::magnitude(double a, double h, double v, double R_m
 
 Vec3 LubricationCorrection::pair_force(double Ri, double Rj, const Vec3& d, const Vec3& vi,
                                        const Vec3& vj) const {
-  const double dist = std::sqrt(dot(d, d));
+  return pair_force(Ri, Rj, d, std::sqrt(dot(d, d)), vi, vj);
+}
+
+Vec3 LubricationCorrection::pair_force(double Ri, double Rj, const Vec3& d, double dist,
+                                       const Vec3& vi, const Vec3& vj) const {
   if (!(dist > 0.0)) return {0.0, 0.0, 0.0};
   const double h = dist - Ri - Rj;
   if (h >= parameters_.cutoff) return {0.0, 0.0, 0.0};

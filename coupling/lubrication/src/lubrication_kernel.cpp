@@ -20,9 +20,10 @@ void LubricationKernel::add_pair_forces(const ParticleView& view, const std::vec
   for (const ParticlePair& pair : pairs) {
     const Vec3 xi = view.x(pair.i), xj = view.x(pair.j);
     const Vec3 d{(xj[0] - xi[0]) / dx, (xj[1] - xi[1]) / dx, (xj[2] - xi[2]) / dx};
-    const double gap = std::sqrt(dot(d, d)) * dx - view.r(pair.i) - view.r(pair.j);
+    const double dist = std::sqrt(dot(d, d));  // in cells
+    const double gap = dist * dx - view.r(pair.i) - view.r(pair.j);
     if (gap >= cutoff_) continue;
-    const Vec3 F = law_.pair_force(view.r(pair.i) / dx, view.r(pair.j) / dx, d,
+    const Vec3 F = law_.pair_force(view.r(pair.i) / dx, view.r(pair.j) / dx, d, dist,
                                    to_lattice_velocity(view.v(pair.i)), to_lattice_velocity(view.v(pair.j)));
     for (int a = 0; a < 3; ++a) force[3 * pair.i + a] += F[a] * scales_.force_unit;
     if (view.is_owned(std::size_t(pair.j)))

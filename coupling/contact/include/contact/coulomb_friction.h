@@ -43,4 +43,10 @@ struct FrictionResult {
 
 FrictionResult coulomb_friction(const FrictionParams& params, const FrictionInput& in);
 
+// The same with the tangential dashpot gamma_t = tangential_damping(params,
+// in.effective_mass) given, for a caller that sums many contacts of one particle.
+double tangential_damping(const FrictionParams& params, double effective_mass);
+FrictionResult coulomb_friction(const FrictionParams& params, double gamma_t,
+                                const FrictionInput& in);
+
 }  // namespace contact

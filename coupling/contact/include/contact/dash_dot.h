@@ -36,10 +36,17 @@ inline double damping_coefficient(const DashDotParams& params, double effective_
 
 // Paper Eq. (1), F_n = k_n delta + k_d delta_dot; repulsive positive. Zero when delta <= 0
 // (no contact).
+// With the damping coefficient k_d = damping_coefficient(params, in.effective_mass) given: a
+// caller with many contacts of one particle computes it (and its square root) once.
+inline double dash_dot_force(const DashDotParams& params, double damping,
+                             const NormalContactInput& in) {
+  if (in.overlap <= 0.0) return 0.0;
+  return params.k_n * in.overlap + damping * in.overlap_rate;
+}
+
 inline double dash_dot_force(const DashDotParams& params, const NormalContactInput& in) {
   if (in.overlap <= 0.0) return 0.0;
-  return params.k_n * in.overlap +
-         damping_coefficient(params, in.effective_mass) * in.overlap_rate;
+  return dash_dot_force(params, damping_coefficient(params, in.effective_mass), in);
 }
 
 // Analytic figures of the linear contact (see REFERENCES.md, "Spring-dashpot"):

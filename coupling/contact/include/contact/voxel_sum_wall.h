@@ -34,6 +34,7 @@
 //
 // Voxel (i,j,k) is the cube of side `spacing` centred at origin + (i,j,k) * spacing
 // (lbm::VoxelGeometry); voxels outside the geometry's box count as fluid.
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -64,12 +65,26 @@ struct VoxelSpring {
   Vec3 spring;              // tangential spring of coulomb_friction.h
 };
 
+// Only slots[0..count) mean anything, so a copy copies only those: the voxel sum replaces every
+// touching particle's store every DEM step and uses 9-20 of its 64 slots (2 KiB).
 struct VoxelSpringStore {
   std::array<VoxelSpring, kVoxelSpringCapacity> slots;
   int count = 0;  // slots[0..count) are in use
 
+  VoxelSpringStore() = default;
+  VoxelSpringStore(const VoxelSpringStore& other) { *this = other; }
+  VoxelSpringStore& operator=(const VoxelSpringStore& other) {
+    count = other.count;
+    std::copy(other.slots.begin(), other.slots.begin() + count, slots.begin());
+    return *this;
+  }
+
   // The stored spring of `voxel`, or null for a new contact.
   const Vec3* find(std::int64_t voxel) const;
+  // The same, searching from slot `hint` on (and round to it), and leaving `hint` at the slot
+  // after the one found: a particle's contacts come in the same order every step, so the next
+  // one is usually there. Voxels are unique in a store, so the answer is find's.
+  const Vec3* find(std::int64_t voxel, int& hint) const;
   // False (nothing stored) when the store is full.
   bool add(std::int64_t voxel, Vec3 spring);
 };
@@ -114,6 +129,11 @@ struct VoxelSumResult {
 
 // The sum of Eq. 6 over the solid voxels within wall_contact_reach of the particle.
 VoxelSumResult voxel_sum_wall_force(const WallContactParams& params, const VoxelSumInput& in);
+// The same into a result the caller keeps between calls (every member overwritten): a result
+// holds a 64-slot spring store, and constructing one per particle per DEM step cost more than
+// the few springs it receives. `out.springs` must not be `*in.springs`.
+void voxel_sum_wall_force(const WallContactParams& params, const VoxelSumInput& in,
+                          VoxelSumResult& out);
 
 // Normal stiffness of a particle of this radius resting on a flat voxel floor: the voxel
 // under it (k_w, Eq. 1) and the 8 around it within the adhesion range, each adding k_a R
@@ -134,5 +154,8 @@ struct VoxelDistance {
 };
 VoxelDistance distance_to_voxel(const lbm::VoxelGeometry& geometry, Vec3 centre, int i, int j,
                                 int k);
+// The same from the centre's lattice coordinates u = (centre - origin) / spacing, which a
+// caller measuring one centre against many voxels computes once.
+VoxelDistance distance_to_voxel(double spacing, const double u[3], int i, int j, int k);
 
 }  // namespace contact

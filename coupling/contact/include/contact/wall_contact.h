@@ -43,6 +43,21 @@ struct WallContactResult {
 
 WallContactResult wall_contact_force(const WallContactParams& params, const WallContactInput& in);
 
+// The terms of the law that depend on the particle alone (radius and mass), the same for each
+// of its contacts: a wall model that sums many contacts of one particle (the voxel sum's
+// 9-20) computes them, and their square roots, once per particle.
+struct WallParticleTerms {
+  double normal_damping = 0.0;      // k_q of Eq. 1 (dash_dot.h damping_coefficient)
+  double tangential_damping = 0.0;  // gamma_t (coulomb_friction.h)
+  double adhesion_range = 0.0;      // 0.03 R of Eq. 4
+};
+WallParticleTerms wall_particle_terms(const WallContactParams& params, double radius, double mass);
+
+// The same law with those terms given (in.radius and in.mass must be the ones they were
+// computed for): the same operations, so the same result bit for bit.
+WallContactResult wall_contact_force(const WallContactParams& params, const WallParticleTerms& terms,
+                                     const WallContactInput& in);
+
 // Reach of the wall force from the particle centre: the radius plus the adhesion range.
 inline double wall_contact_reach(const WallContactParams& params, double radius) {
   return radius + adhesion_range(params.adhesion, radius);

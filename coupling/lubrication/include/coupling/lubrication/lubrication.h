@@ -34,6 +34,9 @@ class LubricationCorrection {
 
   // Force on sphere i from sphere j (the opposite acts on j). d = x_j - x_i.
   Vec3 pair_force(double Ri, double Rj, const Vec3& d, const Vec3& vi, const Vec3& vj) const;
+  // The same with dist = sqrt(dot(d, d)) given, for a caller that has tested the gap with it.
+  Vec3 pair_force(double Ri, double Rj, const Vec3& d, double dist, const Vec3& vi,
+                  const Vec3& vj) const;
   // Force on a sphere of radius R with velocity v from a wall at distance `wall.distance`
   // from its centre.
   Vec3 wall_force(double R, const Vec3& v, const WallDistance& wall) const;
