@@ -1,20 +1,32 @@
 #include "coupling/force/momentum_exchange.h"
 
+#include <algorithm>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 #include "lbm/d3q19.h"
 
 namespace coupling {
 
 namespace {
+using L = lbm::D3Q19;
+
+// Links [first, last), which hold every link of their particles: each particle's sums run
+// over its links in order, whatever the split.
 template <bool kGalilean>
-void sum_links(const SphereLinks& sl, const lbm::FluidSolver& solver, HydrodynamicLoads& loads) {
-  using L = lbm::D3Q19;
+void sum_links(const SphereLinks& sl, std::size_t first, std::size_t last,
+               const lbm::FluidSolver& solver, HydrodynamicLoads& loads) {
   const auto& layout = solver.layout();
   const lbm::PopulationField& f = solver.populations();
   const double rho0 = solver.parameters().rho0;
-  for (std::size_t l = 0; l < sl.links.size(); ++l) {
+  std::ptrdiff_t offset[L::Q];  // cell-index step of c_q
+  for (int q = 0; q < L::Q; ++q) offset[q] = layout.offset(L::c[q][0], L::c[q][1], L::c[q][2]);
+  for (std::size_t l = first; l < last; ++l) {
     const lbm::BoundaryLink& link = sl.links[l];
     const int q = link.q;
-    const std::size_t wall = link.fluid_cell + layout.offset(L::c[q][0], L::c[q][1], L::c[q][2]);
+    const std::size_t wall = link.fluid_cell + offset[q];
     const double out = f.at(q, link.fluid_cell);
     const double back = f.at(L::opposite(q), wall);
     // The reference pressure's share 2 w_q rho0 is removed per link: over a closed link set
@@ -38,14 +50,51 @@ void sum_links(const SphereLinks& sl, const lbm::FluidSolver& solver, Hydrodynam
     for (int a = 0; a < 3; ++a) torque[a] += t[a];
   }
 }
+
+// The first link at or after l of a particle other than link l - 1's (links sorted by
+// particle).
+std::size_t particle_boundary(const SphereLinks& sl, std::size_t l) {
+  while (l > 0 && l < sl.particle.size() && sl.particle[l] == sl.particle[l - 1]) ++l;
+  return l;
+}
+
+// Below this many links per thread the start of a parallel region costs more than it saves.
+constexpr std::size_t kMinLinksPerThread = 256;
+
+template <bool kGalilean>
+void sum_all_links(const SphereLinks& sl, const lbm::FluidSolver& solver, HydrodynamicLoads& loads) {
+  const std::size_t n = sl.links.size();
+  int threads = 1;
+#ifdef _OPENMP
+  // Split only links in particle order (build_sphere_links'), so that each particle's links
+  // fall to one thread.
+  if (std::is_sorted(sl.particle.begin(), sl.particle.end()))
+    threads = std::max(1, std::min(omp_get_max_threads(), int(n / kMinLinksPerThread)));
+#endif
+  if (threads <= 1) {
+    sum_links<kGalilean>(sl, 0, n, solver, loads);
+    return;
+  }
+  // Blocks of whole particles, one per thread: no two threads add to one particle.
+#pragma omp parallel num_threads(threads)
+  {
+#ifdef _OPENMP
+    const std::size_t t = std::size_t(omp_get_thread_num()), nt = std::size_t(omp_get_num_threads());
+#else
+    const std::size_t t = 0, nt = 1;
+#endif
+    sum_links<kGalilean>(sl, particle_boundary(sl, n * t / nt), particle_boundary(sl, n * (t + 1) / nt),
+                         solver, loads);
+  }
+}
 }  // namespace
 
 void add_momentum_exchange(const SphereLinks& links, MomentumExchange method,
                            const lbm::FluidSolver& solver, HydrodynamicLoads& loads) {
   if (method == MomentumExchange::kGalileanInvariant)
-    sum_links<true>(links, solver, loads);
+    sum_all_links<true>(links, solver, loads);
   else
-    sum_links<false>(links, solver, loads);
+    sum_all_links<false>(links, solver, loads);
 }
 
 }  // namespace coupling

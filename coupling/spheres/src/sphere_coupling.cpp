@@ -32,10 +32,10 @@ SphereCoupling::SphereCoupling(lbm::FluidSolver& solver, const SphereCouplingOpt
 }
 
 void SphereCoupling::map_and_refill(const ParticleView& view) {
-  MappingChange change;
+  MappingChange& change = change_;
   {
     StageTimer t(times_.mapping);
-    change = mapping_.update(view, solver_.node_types());
+    mapping_.update(view, solver_.node_types(), change);
   }
   {
     StageTimer t(times_.refill);
@@ -55,7 +55,7 @@ void SphereCoupling::map_and_refill(const ParticleView& view) {
 void SphereCoupling::apply_moving_walls_and_force(const ParticleView& view) {
   {
     StageTimer t(times_.moving_walls);
-    build_sphere_links(mapping_, view, solver_.node_types(), links_);
+    build_sphere_links(mapping_, view, solver_.node_types(), links_, &link_scratch_);
     lbm::apply_links(links_.links, options_.wall_scheme, solver_, &moment_cache_);
   }
   {

@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 #include "lbm/d3q19.h"
 #include "lbm/node_type.h"
 
@@ -19,37 +23,83 @@ double link_fraction(const Vec3& d, const int c[3], double R) {
   return std::clamp(s, 1e-6, 1.0);
 }
 
-void build_sphere_links(const SphereMapping& mapping, const ParticleView& view,
-                        const std::vector<std::uint8_t>& node_type, SphereLinks& out) {
-  using L = lbm::D3Q19;
-  out.clear();
+void SphereLinks::append(const SphereLinks& other) {
+  links.insert(links.end(), other.links.begin(), other.links.end());
+  particle.insert(particle.end(), other.particle.begin(), other.particle.end());
+  arm.insert(arm.end(), other.arm.begin(), other.arm.end());
+}
+
+namespace {
+using L = lbm::D3Q19;
+
+// Appends the links of spheres [first, last), sphere by sphere, each over its surface cells
+// in mapping order and the directions in q order: the order of the links, and with it every
+// sum over them, is that of the particles and does not depend on how they are split.
+void append_links(const SphereMapping& mapping, const ParticleView& view,
+                  const std::vector<std::uint8_t>& node_type, std::size_t first, std::size_t last,
+                  SphereLinks& out) {
   const lbm::BlockLayout& layout = mapping.layout();
-  for (std::size_t wall : mapping.moving_cells()) {
-    const auto w = layout.coords(wall);
-    const int p = mapping.particle_at(wall);
-    const Vec3 centre = view.x(std::size_t(p));
-    const double R = view.r(std::size_t(p));
-    for (int q = 1; q < L::Q; ++q) {
-      // The fluid node x = wall - c_q sends population q into the wall node.
-      const int xi = w[0] - L::c[q][0], xj = w[1] - L::c[q][1], xk = w[2] - L::c[q][2];
-      if (!layout.is_owned(xi, xj, xk)) continue;
-      const std::size_t x = layout.cell(xi, xj, xk);
-      if (node_type[x] != lbm::kFluid) continue;
-      // The node's global position from the wall cell's coordinates (no division).
-      const auto g = layout.to_global(xi, xj, xk);
-      const Vec3 d = mapping.box().displacement(centre, Vec3{double(g[0]), double(g[1]), double(g[2])});
-      const double s = link_fraction(d, L::c[q], R);
-      const Vec3 arm{d[0] + s * L::c[q][0], d[1] + s * L::c[q][1], d[2] + s * L::c[q][2]};
-      lbm::BoundaryLink link;
-      link.fluid_cell = x;
-      link.q = q;
-      link.fraction = s;
-      link.wall_velocity = view.surface_velocity(std::size_t(p), arm);
-      out.links.push_back(link);
-      out.particle.push_back(p);
-      out.arm.push_back(arm);
+  std::ptrdiff_t offset[L::Q];  // cell-index step of c_q
+  for (int q = 0; q < L::Q; ++q) offset[q] = layout.offset(L::c[q][0], L::c[q][1], L::c[q][2]);
+  for (std::size_t p = first; p < last; ++p) {
+    const Vec3 centre = view.x(p);
+    const double R = view.r(p);
+    for (std::size_t wall : mapping.surface_cells(p)) {
+      const auto w = layout.coords(wall);
+      for (int q = 1; q < L::Q; ++q) {
+        // The fluid node x = wall - c_q sends population q into the wall node.
+        const int xi = w[0] - L::c[q][0], xj = w[1] - L::c[q][1], xk = w[2] - L::c[q][2];
+        if (!layout.is_owned(xi, xj, xk)) continue;
+        const std::size_t x = wall - offset[q];
+        if (node_type[x] != lbm::kFluid) continue;
+        // The node's global position from the wall cell's coordinates (no division).
+        const auto g = layout.to_global(xi, xj, xk);
+        const Vec3 d = mapping.box().displacement(centre, Vec3{double(g[0]), double(g[1]), double(g[2])});
+        const double s = link_fraction(d, L::c[q], R);
+        const Vec3 arm{d[0] + s * L::c[q][0], d[1] + s * L::c[q][1], d[2] + s * L::c[q][2]};
+        lbm::BoundaryLink link;
+        link.fluid_cell = x;
+        link.q = q;
+        link.fraction = s;
+        link.wall_velocity = view.surface_velocity(p, arm);
+        out.links.push_back(link);
+        out.particle.push_back(int(p));
+        out.arm.push_back(arm);
+      }
     }
   }
+}
+}  // namespace
+
+void build_sphere_links(const SphereMapping& mapping, const ParticleView& view,
+                        const std::vector<std::uint8_t>& node_type, SphereLinks& out,
+                        std::vector<SphereLinks>* scratch) {
+  out.clear();
+  const std::size_t n = mapping.num_mapped_particles();
+  int threads = 1;
+#ifdef _OPENMP
+  if (scratch && n > 1) threads = std::min<int>(omp_get_max_threads(), int(n));
+#endif
+  if (threads <= 1) {
+    append_links(mapping, view, node_type, 0, n, out);
+    return;
+  }
+  // Thread t takes the t-th contiguous block of spheres into its own list; the lists are
+  // joined in thread order, i.e. in particle order: the same links as one thread's.
+  scratch->resize(std::size_t(threads));
+#pragma omp parallel num_threads(threads)
+  {
+#ifdef _OPENMP
+    const std::size_t t = std::size_t(omp_get_thread_num());
+    const std::size_t nt = std::size_t(omp_get_num_threads());
+#else
+    const std::size_t t = 0, nt = 1;
+#endif
+    SphereLinks& part = (*scratch)[t];
+    part.clear();
+    append_links(mapping, view, node_type, n * t / nt, n * (t + 1) / nt, part);
+  }
+  for (const SphereLinks& part : *scratch) out.append(part);
 }
 
 }  // namespace coupling

@@ -31,7 +31,9 @@ struct BoundaryLink {
 // the scheme chosen once for all links (moving_wall::apply). If `momentum` is non-null it
 // receives, per link, the momentum the fluid gives the wall during the step.
 // Any scheme; the solver gives rho0, tau_plus and the body force. `cache` may be null (a
-// temporary one is used); pass a long-lived one when calling every step.
+// temporary one is used); pass a long-lived one when calling every step. Long link lists
+// are split over the OpenMP threads (moving_wall::apply: same result for any number), so
+// the links must be distinct and leave fluid nodes, as those of spheres and walls do.
 void apply_links(const std::vector<BoundaryLink>& links, MovingWallScheme scheme,
                  FluidSolver& solver, moving_wall::MomentCache* cache = nullptr,
                  std::vector<std::array<double, 3>>* momentum = nullptr);

@@ -13,6 +13,6 @@ double BounceBack::returning_population(const BoundaryLink& link, std::ptrdiff_t
 
 template void apply<BounceBack>(const std::vector<BoundaryLink>&, const BounceBack&,
                                 const BlockLayout&, PopulationField&,
-                                std::vector<std::array<double, 3>>*);
+                                std::vector<std::array<double, 3>>*, int);
 
 }  // namespace lbm::moving_wall

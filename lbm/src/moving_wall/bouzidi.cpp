@@ -19,6 +19,6 @@ double Bouzidi::returning_population(const BoundaryLink& link, std::ptrdiff_t of
 }
 
 template void apply<Bouzidi>(const std::vector<BoundaryLink>&, const Bouzidi&, const BlockLayout&,
-                             PopulationField&, std::vector<std::array<double, 3>>*);
+                             PopulationField&, std::vector<std::array<double, 3>>*, int);
 
 }  // namespace lbm::moving_wall

@@ -14,7 +14,7 @@ double MeiLuoShyy::returning_population(const BoundaryLink& link, std::ptrdiff_t
   const std::size_t x = link.fluid_cell;
   const double delta = link.fraction;
   const Vec3& uw = link.wall_velocity;
-  const NodeMoments& m = cache->moments(f, x, body_force);
+  const NodeMoments& m = cache->moments(f, x, body_force, table);
   const double rho_f = m.rho;
   const Vec3 u_f = m.u;
   Vec3 u_bf;
@@ -25,7 +25,7 @@ double MeiLuoShyy::returning_population(const BoundaryLink& link, std::ptrdiff_t
     chi = (2.0 * delta - 1.0) / (tau + 0.5);
   } else {
     const std::size_t xff = x - offset;
-    u_bf = (*node_type)[xff] == kFluid ? cache->moments(f, xff, body_force).u : u_f;
+    u_bf = (*node_type)[xff] == kFluid ? cache->moments(f, xff, body_force, table).u : u_f;
     chi = (2.0 * delta - 1.0) / (tau - 2.0);
   }
   const double cu_bf = L::c[q][0] * (u_bf[0] - u_f[0]) + L::c[q][1] * (u_bf[1] - u_f[1]) +
@@ -37,6 +37,6 @@ double MeiLuoShyy::returning_population(const BoundaryLink& link, std::ptrdiff_t
 
 template void apply<MeiLuoShyy>(const std::vector<BoundaryLink>&, const MeiLuoShyy&,
                                 const BlockLayout&, PopulationField&,
-                                std::vector<std::array<double, 3>>*);
+                                std::vector<std::array<double, 3>>*, int);
 
 }  // namespace lbm::moving_wall

@@ -1,24 +1,19 @@
 #include "lbm/moving_wall/moment_cache.h"
 
+#include <algorithm>
+
 namespace lbm::moving_wall {
 
-void MomentCache::begin(std::size_t num_cells) {
-  if (stamp_.size() != num_cells || generation_ == UINT32_MAX) {
-    stamp_.assign(num_cells, 0);
-    value_.resize(num_cells);
-    generation_ = 0;
-  }
+void MomentCache::begin(std::size_t num_cells, int tables) {
+  if (tables_.size() < std::size_t(std::max(tables, 1))) tables_.resize(std::size_t(std::max(tables, 1)));
+  const bool wrap = generation_ == UINT32_MAX;
+  for (Table& t : tables_)
+    if (t.stamp.size() != num_cells || wrap) {
+      t.stamp.assign(num_cells, 0);
+      t.value.resize(num_cells);
+    }
+  if (wrap) generation_ = 0;
   ++generation_;
-}
-
-const NodeMoments& MomentCache::moments(const PopulationField& f, std::size_t cell,
-                                        const std::array<double, 3>& body_force) {
-  NodeMoments& v = value_[cell];
-  if (stamp_[cell] != generation_) {
-    stamp_[cell] = generation_;
-    v = node_moments(f, cell, body_force);
-  }
-  return v;
 }
 
 }  // namespace lbm::moving_wall

@@ -20,11 +20,14 @@ struct PeriodicBox {
     box.periodic = d.periodic;
     return box;
   }
-  // b - a, wrapped to the nearest image on periodic axes.
+  // b - a, wrapped to the nearest image on periodic axes. Within a quarter of the length the
+  // wrap is zero (the rounded quotient is 0 even after the division's round-off), so the
+  // division and rounding are skipped there: the same values, for a fraction of the cost.
   Vec3 displacement(const Vec3& a, const Vec3& b) const {
     Vec3 d{b[0] - a[0], b[1] - a[1], b[2] - a[2]};
     for (int k = 0; k < 3; ++k)
-      if (periodic[k]) d[k] -= length[k] * std::round(d[k] / length[k]);
+      if (periodic[k] && std::abs(d[k]) >= 0.25 * length[k])
+        d[k] -= length[k] * std::round(d[k] / length[k]);
     return d;
   }
 };

@@ -74,7 +74,9 @@ class SphereCoupling {
   lbm::FluidSolver& solver_;
   SphereCouplingOptions options_;
   SphereMapping mapping_;
+  MappingChange change_;                     // reused every step
   SphereLinks links_;
+  std::vector<SphereLinks> link_scratch_;    // per-thread links, reused every step
   lbm::moving_wall::MomentCache moment_cache_;  // reused every step
   HydrodynamicLoads loads_;
   MassChange mass_;

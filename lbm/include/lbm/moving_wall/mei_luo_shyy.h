@@ -27,9 +27,17 @@ struct MeiLuoShyy {
   std::array<double, 3> body_force{0.0, 0.0, 0.0};       // removed from the moments (Guo)
   const std::vector<std::uint8_t>* node_type = nullptr;  // to tell whether x - c_q is fluid
   MomentCache* cache = nullptr;                          // begun for the populations of this call
+  int table = 0;                                         // the cache table of this thread
 
   double returning_population(const BoundaryLink& link, std::ptrdiff_t offset,
                               const PopulationField& f) const;
 };
+
+// The copy of `scheme` that thread t of moving_wall::apply runs: its own cache table.
+inline MeiLuoShyy for_thread(const MeiLuoShyy& scheme, int t) {
+  MeiLuoShyy mine = scheme;
+  mine.table = t;
+  return mine;
+}
 
 }  // namespace lbm::moving_wall

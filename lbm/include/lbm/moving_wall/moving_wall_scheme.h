@@ -50,9 +50,14 @@ inline double wall_term(int q, double rho0, const std::array<double, 3>& wall_ve
 // the momentum the fluid gives the wall during the step: c_q (f*_q(x) + f_{-q}(x, t+1))
 // (momentum exchange, Ladd 1994; Mei et al. 2002, paper Eq. 2). Instantiated in each
 // scheme's source file, with that file's compile options.
+// With threads > 1 the links are split into that many contiguous blocks, one per OpenMP
+// thread, each running for_thread(scheme, t). The result is the same for any number of
+// threads: every link writes its own slot (direction -q at its wall node, a non-fluid node)
+// and reads only fluid nodes' populations, which no link writes; the links must be distinct
+// and leave fluid nodes (as the sphere and wall links are).
 template <class Scheme>
 void apply(const std::vector<BoundaryLink>& links, const Scheme& scheme, const BlockLayout& layout,
-           PopulationField& f, std::vector<std::array<double, 3>>* momentum);
+           PopulationField& f, std::vector<std::array<double, 3>>* momentum, int threads = 1);
 
 }  // namespace moving_wall
 }  // namespace lbm

@@ -15,6 +15,7 @@ struct SphereLinks {
   std::vector<int> particle;
   std::vector<Vec3> arm;
   void clear() { links.clear(); particle.clear(); arm.clear(); }
+  void append(const SphereLinks& other);
 };
 
 // One link per owned fluid node x and direction q whose neighbour x + c_q is covered by a
@@ -22,8 +23,13 @@ struct SphereLinks {
 // the sphere |y - X| = R (the smaller root of a quadratic, Iglberger et al. 2008), and the
 // wall velocity is v + omega x r at the cut point. Only owned fluid nodes get links, so the
 // momentum summed over them counts each fluid-particle exchange on exactly one rank.
+// The links of a sphere are contiguous, spheres in view order. Only the mapping's surface
+// cells are visited, so the work is the spheres' surface. With `scratch` (per-thread lists
+// kept by the caller, so that they are allocated once) the spheres are split over the
+// OpenMP threads; the result is the same for any number of threads.
 void build_sphere_links(const SphereMapping& mapping, const ParticleView& view,
-                        const std::vector<std::uint8_t>& node_type, SphereLinks& out);
+                        const std::vector<std::uint8_t>& node_type, SphereLinks& out,
+                        std::vector<SphereLinks>* scratch = nullptr);
 
 // Smallest s in [0, 1] with |d + s c|^2 = R^2 for d outside and d + c inside the sphere
 // (d = node - centre); clamped to [1e-6, 1].

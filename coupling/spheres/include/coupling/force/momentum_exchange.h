@@ -41,7 +41,9 @@ struct HydrodynamicLoads {
 // links, i.e. in contact with a wall or another sphere).
 // Sums over the links (all from owned fluid nodes, so ghost layers never double count),
 // after the moving-wall stage filled the returning populations and before collide_stream.
-// Torque arm: the cut point on the surface.
+// Torque arm: the cut point on the surface. Links in particle order (as build_sphere_links
+// gives them) are split over OpenMP threads by whole particles, each summed in link order,
+// so the loads are the same for any number of threads.
 void add_momentum_exchange(const SphereLinks& links, MomentumExchange method,
                            const lbm::FluidSolver& solver, HydrodynamicLoads& loads);
 

@@ -27,13 +27,29 @@ class SphereMapping {
 
   // Maps the particles of `view` onto every local cell (ghost layer included). Leaves
   // node_type unchanged: commit() applies the change after the refill has read the old
-  // state.
+  // state. The work is proportional to the spheres' volume (plus the cells they covered
+  // last step), never to the lattice. The second form reuses `change`'s storage.
   MappingChange update(const ParticleView& view, const std::vector<std::uint8_t>& node_type);
+  void update(const ParticleView& view, const std::vector<std::uint8_t>& node_type,
+              MappingChange& change);
   void commit(const MappingChange& change, std::vector<std::uint8_t>& node_type) const;
 
   // Index (in the last mapped view) of the sphere covering `cell`, or -1.
   int particle_at(std::size_t cell) const { return owner_[cell]; }
   const std::vector<std::size_t>& moving_cells() const { return moving_; }
+  // The covered cells of sphere p (index in the last mapped view) that can have fluid
+  // neighbours: those within sqrt(2) (the longest link) of its surface, in mapping order.
+  // Only they can take links (coupling/boundary/sphere_links.h).
+  struct CellRange {
+    const std::size_t* first;
+    const std::size_t* last;
+    const std::size_t* begin() const { return first; }
+    const std::size_t* end() const { return last; }
+  };
+  CellRange surface_cells(std::size_t p) const {
+    return {surface_.data() + surface_begin_[p], surface_.data() + surface_begin_[p + 1]};
+  }
+  std::size_t num_mapped_particles() const { return surface_begin_.empty() ? 0 : surface_begin_.size() - 1; }
   // Global position of a local cell.
   Vec3 node_position(std::size_t cell) const;
   const lbm::BlockLayout& layout() const { return layout_; }
@@ -45,6 +61,12 @@ class SphereMapping {
   std::vector<int> owner_;        // per cell: covering particle or -1
   std::vector<int> shell_;        // per cell: scratch, particle whose shell holds the cell
   std::vector<std::size_t> moving_;  // cells with owner_ >= 0
+  std::vector<std::size_t> previous_;  // moving_ of the step before (storage kept)
+  std::vector<std::size_t> surface_;   // surface cells, particle by particle
+  std::vector<std::size_t> surface_begin_;  // per particle: first index in surface_ (+ end)
+
+  void map_image(int p, const double c[3], double R, const std::vector<std::uint8_t>& node_type,
+                 MappingChange& change);
 };
 
 }  // namespace coupling
