@@ -9,7 +9,9 @@
 // tail used to be plain stores: a plain store into a line that is not in the cache holds the
 // store buffer until that line has been read, and a row of the kernel has two or three such
 // lines per population; that cost the kernel a third of its time at 128^3 (README,
-// "Measured figures"). Other rows (other threads) may write the rest of such a line: the
+// "Measured figures"). On short rows the plain stores are kept (stream_edges false, see
+// collide_stream.cpp): there a third of the lines are row ends that the halo exchange
+// reads next. Other rows (other threads) may write the rest of such a line: the
 // non-temporal stores write only their own bytes, as the plain ones did. Without AVX the
 // plain loop is all there is; the values written are the same either way (only the way
 // they reach memory changes).
@@ -64,21 +66,29 @@ inline void stream_line(float* to, const double* from) {
 }
 #endif
 
-// to[i] = Real(from[i]) for i < m, every value with a non-temporal store. `from` is the
-// kernel's 64-byte aligned double buffer. Call streaming_store_fence() before another thread
-// may read what was stored.
+// to[i] = Real(from[i]) for i < m: the whole lines with non-temporal stores, the head and
+// the tail too where stream_edges, else with plain stores (they stay in the cache, which
+// pays when they are read soon: the halo exchange reads the ends of every row). `from` is
+// the kernel's 64-byte aligned double buffer. Call streaming_store_fence() before another
+// thread may read what was stored.
 template <typename Real>
-inline void streaming_store(Real* __restrict to, const double* __restrict from, int m) {
+inline void streaming_store(Real* __restrict to, const double* __restrict from, int m,
+                            bool stream_edges = true) {
 #if defined(__AVX512F__) || defined(__AVX__)
   constexpr int kPerLine = int(kCacheLine / sizeof(Real));
   const auto address = reinterpret_cast<std::uintptr_t>(to);
   int head = int((kCacheLine - address % kCacheLine) % kCacheLine / sizeof(Real));
   if (address % sizeof(Real) != 0 || head > m) head = m;  // no whole line to stream
   const int body_end = head + (m - head) / kPerLine * kPerLine;
-  for (int i = 0; i < head; ++i) stream_value(to + i, from[i]);
+  if (!stream_edges) {
+    for (int i = 0; i < head; ++i) to[i] = static_cast<Real>(from[i]);
+    for (int i = body_end; i < m; ++i) to[i] = static_cast<Real>(from[i]);
+  }
+  for (int i = 0; i < head && stream_edges; ++i) stream_value(to + i, from[i]);
   for (int i = head; i < body_end; i += kPerLine) stream_line(to + i, from + i);
-  for (int i = body_end; i < m; ++i) stream_value(to + i, from[i]);
+  for (int i = body_end; i < m && stream_edges; ++i) stream_value(to + i, from[i]);
 #else
+  (void)stream_edges;
   for (int i = 0; i < m; ++i) to[i] = static_cast<Real>(from[i]);
 #endif
 }
