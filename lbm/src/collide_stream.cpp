@@ -22,13 +22,22 @@ namespace {
 
 using L = D3Q19;
 
-// Rows are processed in chunks of kChunk nodes: the pulled populations are first copied
-// into a small L1-resident SoA buffer (19 contiguous streams), then collided in place and
-// written out with streaming stores (no write-allocate: 2 x 19 values moved per update, not
-// 3 x 19). Splitting the gather from the arithmetic lets the compiler vectorise the
-// arithmetic across the chunk's nodes: it reads the node types as a double mask, since
-// GCC does not vectorise a loop that mixes byte and double lanes.
-constexpr int kChunk = 64;
+// Rows are processed in chunks of kChunk nodes: the populations are pulled straight from
+// the source array, collided, and the results gathered in a small L1-resident SoA buffer
+// (19 contiguous streams) that is written out with streaming stores (no write-allocate:
+// 2 x 19 values moved per update, not 3 x 19). Splitting the arithmetic from the stores
+// lets the compiler vectorise it across the chunk's nodes: it reads the node types as a
+// double mask, since GCC does not vectorise a loop that mixes byte and double lanes.
+// 128 nodes: a row of the 128^3 benchmark is one chunk, so each population's output range
+// has two lines shared with neighbouring rows (its head and tail) instead of three or four;
+// 64 was 10 % slower, 256 (a 39 KB buffer, most of L1) 7 % slower.
+constexpr int kChunk = 128;
+// Rows at least this long write their ends (the lines shared with the neighbouring rows)
+// with non-temporal stores too (streaming_store.h): +35 % at 128^3 and +10 % at 64^3,
+// where the ends are 2 of 17 or 9 lines, but -16 % for the paper's rank block (rows of 45:
+// 2 of 6 lines), whose row ends the x halo exchange reads right after, from the cache
+// when they were written with plain stores.
+constexpr int kStreamEdgesFromRow = 64;
 // The q loops carry "GCC unroll 19": GCC peels at most 16 iterations by default, and only a
 // fully unrolled loop turns the velocity components into constants (a 2.5x speed-up).
 
@@ -41,6 +50,7 @@ void collide_stream_row(const Real* __restrict src, Real* __restrict dst,
                         double omega_minus, double fx, double fy, double fz, double rho0) {
   const double source_even = 1.0 - 0.5 * omega_plus;
   const double source_odd = 1.0 - 0.5 * omega_minus;
+  const bool stream_edges = length >= kStreamEdgesFromRow;
   alignas(64) double f[L::Q][kChunk];
   alignas(64) double fluid_mask[kChunk];
   for (int start = 0; start < length; start += kChunk) {
@@ -105,7 +115,7 @@ void collide_stream_row(const Real* __restrict src, Real* __restrict dst,
       }
     }
     #pragma GCC unroll 19
-    for (int q = 0; q < L::Q; ++q) detail::streaming_store(dst + q * n + first, f[q], m);
+    for (int q = 0; q < L::Q; ++q) detail::streaming_store(dst + q * n + first, f[q], m, stream_edges);
   }
 }
 

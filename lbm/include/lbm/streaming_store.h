@@ -3,12 +3,21 @@
 //
 // A plain store first reads the destination cache line from memory (write-allocate), so a
 // pull kernel that writes its 19 populations with plain stores moves 3 x 19 values per
-// update instead of 2 x 19. A non-temporal (streaming) store writes a whole line without
-// reading it. It needs whole, aligned lines: the head and the tail of a range that do not
-// fill a line keep plain stores. Without AVX the plain loop is all there is; the values
-// written are the same either way (only the way they reach memory changes).
+// update instead of 2 x 19. A non-temporal (streaming) store writes without reading: whole,
+// aligned lines as one vector store each, and the head and the tail of a range that do not
+// fill a line as one 8- or 4-byte non-temporal store (movnti) per value. The head and the
+// tail used to be plain stores: a plain store into a line that is not in the cache holds the
+// store buffer until that line has been read, and a row of the kernel has two or three such
+// lines per population; that cost the kernel a third of its time at 128^3 (README,
+// "Measured figures"). On short rows the plain stores are kept (stream_edges false, see
+// collide_stream.cpp): there a third of the lines are row ends that the halo exchange
+// reads next. Other rows (other threads) may write the rest of such a line: the
+// non-temporal stores write only their own bytes, as the plain ones did. Without AVX the
+// plain loop is all there is; the values written are the same either way (only the way
+// they reach memory changes).
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 
 #if defined(__AVX512F__) || defined(__AVX__)
 #include <immintrin.h>
@@ -28,45 +37,60 @@ inline __m256 to_float8(const double* from) {
                          _mm256_cvtpd_ps(_mm256_loadu_pd(from)));
 #endif
 }
+
+// One value, non-temporal (movnti stores a general register: its bits are the value's).
+inline void stream_value(double* to, double value) {
+  long long bits;
+  std::memcpy(&bits, &value, sizeof bits);
+  _mm_stream_si64(reinterpret_cast<long long*>(to), bits);
+}
+inline void stream_value(float* to, double value) {
+  const float rounded = static_cast<float>(value);
+  int bits;
+  std::memcpy(&bits, &rounded, sizeof bits);
+  _mm_stream_si32(reinterpret_cast<int*>(to), bits);
+}
+
+// One whole, aligned cache line.
+inline void stream_line(double* to, const double* from) {
+#if defined(__AVX512F__)
+  _mm512_stream_pd(to, _mm512_loadu_pd(from));
+#else
+  _mm256_stream_pd(to, _mm256_loadu_pd(from));
+  _mm256_stream_pd(to + 4, _mm256_loadu_pd(from + 4));
+#endif
+}
+inline void stream_line(float* to, const double* from) {
+  _mm256_stream_ps(to, to_float8(from));
+  _mm256_stream_ps(to + 8, to_float8(from + 8));
+}
 #endif
 
-// to[i] = Real(from[i]) for i < m; whole cache lines of `to` written with streaming stores.
-// `from` is the kernel's 64-byte aligned double buffer. Call streaming_store_fence() before
-// another thread may read what was stored.
+// to[i] = Real(from[i]) for i < m: the whole lines with non-temporal stores, the head and
+// the tail too where stream_edges, else with plain stores (they stay in the cache, which
+// pays when they are read soon: the halo exchange reads the ends of every row). `from` is
+// the kernel's 64-byte aligned double buffer. Call streaming_store_fence() before another
+// thread may read what was stored.
 template <typename Real>
-inline void streaming_store(Real* __restrict to, const double* __restrict from, int m) {
+inline void streaming_store(Real* __restrict to, const double* __restrict from, int m,
+                            bool stream_edges = true) {
+#if defined(__AVX512F__) || defined(__AVX__)
   constexpr int kPerLine = int(kCacheLine / sizeof(Real));
   const auto address = reinterpret_cast<std::uintptr_t>(to);
   int head = int((kCacheLine - address % kCacheLine) % kCacheLine / sizeof(Real));
   if (address % sizeof(Real) != 0 || head > m) head = m;  // no whole line to stream
   const int body_end = head + (m - head) / kPerLine * kPerLine;
-#if defined(__AVX512F__)
-  if constexpr (sizeof(Real) == 8) {  // head and tail as one masked store each
-    double* out = reinterpret_cast<double*>(to);
-    if (head > 0) _mm512_mask_storeu_pd(out, __mmask8((1u << head) - 1), _mm512_loadu_pd(from));
-    for (int i = head; i < body_end; i += kPerLine)
-      _mm512_stream_pd(out + i, _mm512_loadu_pd(from + i));
-    if (body_end < m)
-      _mm512_mask_storeu_pd(out + body_end, __mmask8((1u << (m - body_end)) - 1),
-                            _mm512_loadu_pd(from + body_end));
-    return;
+  if (!stream_edges) {
+    for (int i = 0; i < head; ++i) to[i] = static_cast<Real>(from[i]);
+    for (int i = body_end; i < m; ++i) to[i] = static_cast<Real>(from[i]);
   }
-#endif
-  for (int i = 0; i < head; ++i) to[i] = static_cast<Real>(from[i]);
-#if defined(__AVX512F__) || defined(__AVX__)
-  for (int i = head; i < body_end; i += kPerLine) {
-    if constexpr (sizeof(Real) == 8) {
-      _mm256_stream_pd(reinterpret_cast<double*>(to + i), _mm256_loadu_pd(from + i));
-      _mm256_stream_pd(reinterpret_cast<double*>(to + i + 4), _mm256_loadu_pd(from + i + 4));
-    } else {
-      for (int h = 0; h < kPerLine; h += 8)
-        _mm256_stream_ps(reinterpret_cast<float*>(to + i + h), to_float8(from + i + h));
-    }
-  }
+  for (int i = 0; i < head && stream_edges; ++i) stream_value(to + i, from[i]);
+  for (int i = head; i < body_end; i += kPerLine) stream_line(to + i, from + i);
+  for (int i = body_end; i < m && stream_edges; ++i) stream_value(to + i, from[i]);
 #else
-  for (int i = head; i < body_end; ++i) to[i] = static_cast<Real>(from[i]);
+  (void)stream_edges;
+  for (int i = 0; i < m; ++i) to[i] = static_cast<Real>(from[i]);
 #endif
-  for (int i = body_end; i < m; ++i) to[i] = static_cast<Real>(from[i]);
 }
 
 // Orders this thread's streaming stores before its later stores (they are weakly ordered),
