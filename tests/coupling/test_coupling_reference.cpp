@@ -129,7 +129,7 @@ void expect_same_links(const SphereLinks& a, const SphereLinks& b) {
 
 // One coupled step of the crowded scene; the populations and the loads after it.
 struct StepResult {
-  std::vector<lbm::Real> populations;
+  lbm::PopulationField::Storage populations;
   HydrodynamicLoads loads;
 };
 StepResult one_step(lbm::MovingWallScheme scheme, int threads) {
