@@ -2,24 +2,28 @@
 """bench_paper_run: how long one paper-length run (10^6 fluid steps, N_DEM = 100 DEM substeps
 each) would take on this machine, from a few thousand fluid steps of the paper's scene.
 
-The scene is examples/pore/in.pore with its -var knobs set to the paper's lattice: 90 x 40 x 40
-cells (inlet I = 20, free III = 20, pore IV L = 30, outlet II = 20, W = 40), a pore of D = 25
-cells, particles of d = 7 cells inserted at c_in = 0.05 in region I (about 10 particles in the
-scene: they drift at u_in = 0.001 cell per fluid step, so the load hardly changes in the run).
-It runs on 2 MPI ranks with one OpenMP thread each. The particle-free warm-up is one fluid
-step; the timed figure is fix lbm/pore's own "s per fluid step" of the run with particles:
+The scene is examples/pore/in.pore at its defaults, which are the paper's (Table I read in
+d-units at 7.1 cells per d): a 90 x 40 x 40 lattice (inlet I = 20, free III = 20, pore IV
+L = 30, outlet II = 20, W = 40 cells), a pore of D = 25 cells, particles of d = 7 cells
+inserted at c_in = 0.05 in region I every 100 fluid steps, inlet velocity 0.02 cells per
+fluid step, N_DEM = 100. It runs on 2 MPI ranks with one OpenMP thread each. The particle-
+free warm-up is one fluid step; the timed figure is fix lbm/pore's own "s per fluid step" of
+the run with particles:
   fix lbm/pore: N fluid steps in T s: ... ; S s per fluid step
-Prints, for each driver given (--driver for the double-precision build, --single-driver for
-a -DLBM_PORE_SINGLE_PRECISION=ON build):
+The drivers given (--driver for the double-precision build, --single-driver for a
+-DLBM_PORE_SINGLE_PRECISION=ON build) run --repeat times, interleaved (double, single, double,
+...), so that a shared machine's load swings fall on both. Prints the median and min-max:
   BENCH paper_run_fluid_step_s[_single], BENCH paper_run_particles[_single],
-  BENCH paper_run_projected_hours[_single] (goal <= 0.75 in double precision).
+  BENCH paper_run_projected_hours[_single] (goal <= 0.75 in double precision) with _min, _max.
 
 usage: bench_paper_run.py --driver liggghts-lbm --script examples/pore/in.pore
-                          [--single-driver liggghts-lbm] [--fluid-steps N] [--mpirun mpirun]
+                          [--single-driver liggghts-lbm] [--fluid-steps N] [--repeat N]
+                          [--mpirun mpirun]
 """
 import argparse
 import os
 import re
+import statistics
 import subprocess
 import sys
 import tempfile
@@ -27,8 +31,7 @@ import tempfile
 PER_STEP = re.compile(r"fix lbm/pore: (\d+) fluid steps in [\d.eE+-]+ s: .*?; ([\d.eE+-]+) s per fluid step")
 PAPER_STEPS = 1e6
 N_DEM = 100
-SCENE = {"Li": 20, "Lf": 20, "Lp": 30, "Lo": 20, "W": 40, "D": 25, "c_in": 0.05,
-         "u_in": 0.001, "n_dem": N_DEM, "vtk_every": 0}
+SCENE = {"cells_per_d": 7.1, "c_in": 0.05, "n_dem": N_DEM, "vtk_every": 0}
 
 
 def time_run(driver, script, mpirun, fluid_steps):
@@ -45,6 +48,9 @@ def time_run(driver, script, mpirun, fluid_steps):
     if len(runs) < 2:
         print(out[-3000:])
         sys.exit(f"bench_paper_run: {driver} did not complete both runs")
+    # The timing line of the run with particles: where the step's time goes.
+    lines = [line for line in out.splitlines() if line.startswith("fix lbm/pore:") and "fluid steps in" in line]
+    print(f"bench_paper_run: {lines[-1]}", flush=True)
     return float(runs[1][1]), (atoms[-1] if atoms else "unknown")
 
 
@@ -55,14 +61,26 @@ def main():
     parser.add_argument("--script", required=True)
     parser.add_argument("--mpirun", default="mpirun")
     parser.add_argument("--fluid-steps", type=int, default=2000)
+    parser.add_argument("--repeat", type=int, default=3)
     args = parser.parse_args()
     script = os.path.abspath(args.script)
     drivers = [("", args.driver)] + ([("_single", args.single_driver)] if args.single_driver else [])
-    for suffix, driver in drivers:
-        per_step, particles = time_run(os.path.abspath(driver), script, args.mpirun, args.fluid_steps)
-        print(f"BENCH paper_run_fluid_step_s{suffix} {per_step:.4g} s")
-        print(f"BENCH paper_run_particles{suffix} {particles} count")
-        print(f"BENCH paper_run_projected_hours{suffix} {per_step * PAPER_STEPS / 3600:.3f} hours")
+    times = {suffix: [] for suffix, _ in drivers}
+    particles = {}
+    for round_ in range(args.repeat):
+        for suffix, driver in drivers:
+            per_step, count = time_run(os.path.abspath(driver), script, args.mpirun, args.fluid_steps)
+            times[suffix].append(per_step)
+            particles[suffix] = count
+            print(f"bench_paper_run: round {round_ + 1}, {driver}: {per_step:.4g} s per fluid step, "
+                  f"{count} particles", flush=True)
+    for suffix, _ in drivers:
+        t = sorted(times[suffix])
+        median = statistics.median(t)
+        print(f"BENCH paper_run_fluid_step_s{suffix} {median:.4g} s")
+        print(f"BENCH paper_run_particles{suffix} {particles[suffix]} count")
+        for name, value in (("", median), ("_min", t[0]), ("_max", t[-1])):
+            print(f"BENCH paper_run_projected_hours{suffix}{name} {value * PAPER_STEPS / 3600:.3f} hours")
 
 
 if __name__ == "__main__":
