@@ -72,8 +72,7 @@ void SphereCoupling::apply_moving_walls_and_force(const ParticleView& view) {
                                                     conserve ? &defect_per_link_ : nullptr);
   if (conserve)
     lbm::moving_wall::restore_link_mass(links_.links, solver_.layout(), solver_.node_types(),
-                                        defect_per_link_, solver_.populations(),
-                                        link_mass_scratch_);
+                                        defect_per_link_, solver_.populations());
   surface_mass_ = lbm::moving_wall::moving_surface_mass(links_.links, solver_.parameters().rho0) +
                   (conserve ? 0.0 : link_defect_.net);
 }

@@ -53,52 +53,27 @@ double moving_surface_mass(const std::vector<BoundaryLink>& links, double rho0) 
 
 void restore_link_mass(const std::vector<BoundaryLink>& links, const BlockLayout& layout,
                        const std::vector<std::uint8_t>& node_type,
-                       const std::vector<double>& per_link, PopulationField& f,
-                       LinkMassScratch& scratch) {
+                       const std::vector<double>& per_link, PopulationField& f) {
   // The defects are all measured before any is removed: removing one writes slots that
-  // another link of the same node reads as its returned population. Slot f_p(x - c_p) is
-  // pulled by x alone, so nodes are independent and only each node's own order matters.
+  // another link of the same node reads as its returned population.
   const LinkOffsets offsets(layout);
-  scratch.first.resize(layout.num_cells(), -1);
-  scratch.next.assign(links.size(), -1);
-  scratch.nodes.clear();
-  // Chains in link order: built from the back, each link put in front of its node's chain.
-  for (std::size_t l = links.size(); l-- > 0;) {
+  for (std::size_t l = 0; l < links.size(); ++l) {
     const std::size_t x = links[l].fluid_cell;
-    if (scratch.first[x] < 0) scratch.nodes.push_back(x);
-    scratch.next[l] = scratch.first[x];
-    scratch.first[x] = int(l);
-  }
-  for (std::size_t x : scratch.nodes) {
-    const int head = scratch.first[x];
-    // Population p reaches x from x - c_p in the next (pull) streaming. A ghost beyond an
-    // open face is written after this stage (the open boundary fills it): its share goes on
-    // x's own rest population, so that x's mass changes by the whole defect and the budget's
-    // books (PoreMonitor) stay exact.
-    bool next_to_open_face = false;
-    for (int p = 1; p < L::Q; ++p) {
+    double at_rest = 0.0;
+    // Population p reaches x from x - c_p in the next (pull) streaming.
+    for (int p = 0; p < L::Q; ++p) {
       const std::size_t from = x - offsets.of[p];
+      // A ghost beyond an open face is written after this stage (the open boundary fills
+      // it): its share goes on x's own rest population, so that x's mass changes by the
+      // whole defect and the budget's books (PoreMonitor) stay exact.
       if (node_type[from] == kOpen) {
-        next_to_open_face = true;
+        at_rest += L::w[p] * per_link[l];
         continue;
       }
       Real& slot = f.at(p, from);
-      Real value = slot;
-      for (int l = head; l >= 0; l = scratch.next[l])
-        value = static_cast<Real>(value - L::w[p] * per_link[l]);
-      slot = value;
+      slot = static_cast<Real>(slot - L::w[p] * per_link[l]);
     }
-    Real rest = f.at(0, x);
-    for (int l = head; l >= 0; l = scratch.next[l]) {
-      rest = static_cast<Real>(rest - L::w[0] * per_link[l]);
-      if (!next_to_open_face) continue;
-      double at_rest = 0.0;
-      for (int p = 1; p < L::Q; ++p)
-        if (node_type[x - offsets.of[p]] == kOpen) at_rest += L::w[p] * per_link[l];
-      if (at_rest != 0.0) rest = static_cast<Real>(rest - at_rest);
-    }
-    f.at(0, x) = rest;
-    scratch.first[x] = -1;
+    if (at_rest != 0.0) f.at(0, x) = static_cast<Real>(f.at(0, x) - at_rest);
   }
 }
 

@@ -83,7 +83,6 @@ class SphereCoupling {
   lbm::moving_wall::LinkMassDefect link_defect_;
   double surface_mass_ = 0.0;
   std::vector<double> defect_per_link_;  // reused every step
-  lbm::moving_wall::LinkMassScratch link_mass_scratch_;  // reused every step
   StageTimes times_;
 };
 

@@ -59,20 +59,8 @@ double moving_surface_mass(const std::vector<BoundaryLink>& links, double rho0);
 // Removes the measured defects as described above; per_link from link_mass_defect.
 // Slots in a ghost beyond an open face (rewritten by the open boundary stage after this one)
 // are not written; their share goes on x's rest population.
-//
-// Node by node: the links of one fluid node are gathered (in their order in `links`) and
-// each of its 19 slots is read and written once, the defects taken off in that order, so the
-// result is the same to the bit as removing them link by link, with a fraction of the
-// scattered memory accesses (a node next to a sphere has 3-5 links). `scratch` keeps the
-// grouping's storage between calls (one int per lattice cell, reset after use).
-struct LinkMassScratch {
-  std::vector<int> first;  // per cell: its first link, -1 if none
-  std::vector<int> next;   // per link: the next link of the same node, -1 if none
-  std::vector<std::size_t> nodes;
-};
 void restore_link_mass(const std::vector<BoundaryLink>& links, const BlockLayout& layout,
                        const std::vector<std::uint8_t>& node_type,
-                       const std::vector<double>& per_link, PopulationField& f,
-                       LinkMassScratch& scratch);
+                       const std::vector<double>& per_link, PopulationField& f);
 
 }  // namespace lbm::moving_wall
