@@ -10,11 +10,15 @@ fluid step, N_DEM = 100. It runs on 2 MPI ranks with one OpenMP thread each. The
 free warm-up is one fluid step; the timed figure is fix lbm/pore's own "s per fluid step" of
 the run with particles:
   fix lbm/pore: N fluid steps in T s: ... ; S s per fluid step
+The ranks split the lattice across the flow (in.pore's -var procs "1 * 1": both ranks hold
+half of every region, so both share the coupling of the particles arriving at the inlet);
+_along_flow is in.pore's default grid ("* 1 1", the inlet's rank does the coupling alone).
 The drivers given (--driver for the double-precision build, --single-driver for a
--DLBM_PORE_SINGLE_PRECISION=ON build) run --repeat times, interleaved (double, single, double,
-...), so that a shared machine's load swings fall on both. Prints the median and min-max:
-  BENCH paper_run_fluid_step_s[_single], BENCH paper_run_particles[_single],
-  BENCH paper_run_projected_hours[_single] (goal <= 0.75 in double precision) with _min, _max.
+-DLBM_PORE_SINGLE_PRECISION=ON build) run --repeat times, interleaved (double, double along the
+flow, single, double, ...), so that a shared machine's load swings fall on all. Prints the
+median and min-max:
+  BENCH paper_run_fluid_step_s[_along_flow|_single], BENCH paper_run_particles[...],
+  BENCH paper_run_projected_hours[...] (goal <= 0.75 in double precision) with _min, _max.
 
 usage: bench_paper_run.py --driver liggghts-lbm --script examples/pore/in.pore
                           [--single-driver liggghts-lbm] [--fluid-steps N] [--repeat N]
@@ -34,8 +38,9 @@ N_DEM = 100
 SCENE = {"cells_per_d": 7.1, "c_in": 0.05, "n_dem": N_DEM, "vtk_every": 0}
 
 
-def time_run(driver, script, mpirun, fluid_steps):
-    knobs = dict(SCENE, warmup=N_DEM, steps=fluid_steps * N_DEM, thermo_every=fluid_steps * N_DEM)
+def time_run(driver, script, mpirun, fluid_steps, procs):
+    knobs = dict(SCENE, warmup=N_DEM, steps=fluid_steps * N_DEM, thermo_every=fluid_steps * N_DEM,
+                 procs=procs)
     cmd = [mpirun, "-np", "2", "--allow-run-as-root", "--oversubscribe", driver, "-in", script]
     for name, value in knobs.items():
         cmd += ["-var", name, str(value)]
@@ -64,17 +69,22 @@ def main():
     parser.add_argument("--repeat", type=int, default=3)
     args = parser.parse_args()
     script = os.path.abspath(args.script)
-    drivers = [("", args.driver)] + ([("_single", args.single_driver)] if args.single_driver else [])
-    times = {suffix: [] for suffix, _ in drivers}
+    # (suffix, driver, LIGGGHTS processors grid): the figure is for the grid split across the
+    # flow (each rank holds half of every region, so both do coupling work); _along_flow is
+    # in.pore's default grid (the inlet's rank holds all the arriving particles).
+    runs = [("", args.driver, "1 * 1"), ("_along_flow", args.driver, "* 1 1")]
+    if args.single_driver:
+        runs.append(("_single", args.single_driver, "1 * 1"))
+    times = {suffix: [] for suffix, _, _ in runs}
     particles = {}
     for round_ in range(args.repeat):
-        for suffix, driver in drivers:
-            per_step, count = time_run(os.path.abspath(driver), script, args.mpirun, args.fluid_steps)
+        for suffix, driver, procs in runs:
+            per_step, count = time_run(os.path.abspath(driver), script, args.mpirun, args.fluid_steps, procs)
             times[suffix].append(per_step)
             particles[suffix] = count
-            print(f"bench_paper_run: round {round_ + 1}, {driver}: {per_step:.4g} s per fluid step, "
-                  f"{count} particles", flush=True)
-    for suffix, _ in drivers:
+            print(f"bench_paper_run: round {round_ + 1}, {driver}, processors {procs}: {per_step:.4g} s "
+                  f"per fluid step, {count} particles", flush=True)
+    for suffix, _, _ in runs:
         t = sorted(times[suffix])
         median = statistics.median(t)
         print(f"BENCH paper_run_fluid_step_s{suffix} {median:.4g} s")
