@@ -389,7 +389,7 @@ void FixLbmPore::fluid_step() {
     coupling_->step(particles_.view());
     monitor_->record_coupling_mass(
         coupling_->last_surface_mass(),
-        coupling_->last_mass_change().net_over(solver_->parameters().rho0), *solver_);
+        coupling_->last_mass_change().net_over(solver_->parameters().rho0));
   }
   store_loads(count > 0);
   ++fluid_steps_;

@@ -114,22 +114,23 @@ double PoreMonitor::fluid_mass_unit() const {
 }
 
 // The mass the step's streaming moved through the open faces (FluidSolver::open_face_mass:
-// exact, from the populations that crossed them), over all ranks.
+// exact, from the populations that crossed them) and what the coupling put in (recorded by
+// record_coupling_mass), over all ranks in one reduction.
 void PoreMonitor::add_plane_masses(const lbm::FluidSolver& solver) {
-  double faces[2] = {solver.open_face_mass(0), solver.open_face_mass(1)};
-  solver.decomposition().comm.sum(faces, 2);
+  double sums[4] = {solver.open_face_mass(0), solver.open_face_mass(1), coupling_mass_[0],
+                    coupling_mass_[1]};
+  coupling_mass_[0] = coupling_mass_[1] = 0.0;
+  solver.decomposition().comm.sum(sums, 4);
   const double unit = fluid_mass_unit() / solver.parameters().rho0;
-  values_[kFluidMassIn] += faces[0] * unit;
-  values_[kFluidMassOut] -= faces[1] * unit;
+  values_[kFluidMassIn] += sums[0] * unit;
+  values_[kFluidMassOut] -= sums[1] * unit;
+  values_[kParticleSurfaceMass] += sums[2] * unit;
+  values_[kParticleRefillMass] += sums[3] * unit;
 }
 
-void PoreMonitor::record_coupling_mass(double surface_mass, double refill_mass,
-                                       const lbm::FluidSolver& solver) {
-  double sums[2] = {surface_mass, refill_mass};
-  solver.decomposition().comm.sum(sums, 2);
-  const double unit = fluid_mass_unit() / solver.parameters().rho0;
-  values_[kParticleSurfaceMass] += sums[0] * unit;
-  values_[kParticleRefillMass] += sums[1] * unit;
+void PoreMonitor::record_coupling_mass(double surface_mass, double refill_mass) {
+  coupling_mass_[0] += surface_mass;
+  coupling_mass_[1] += refill_mass;
 }
 
 std::optional<BurstRecord> PoreMonitor::record_fluid_step(const lbm::FluidSolver& solver, long long fluid_step,

@@ -88,9 +88,10 @@ class PoreMonitor {
                         double local_force_x, const lbm::Communicator& comm);
   // The largest particle shift of the step (cells, already reduced over ranks).
   void record_particle_shift(double cells) { values_[kMaxParticleShift] = cells; }
-  // After a coupled fluid step (collective): this rank's surface and refill mass of the step
-  // (SphereCoupling::last_surface_mass, last_mass_change().net_over(rho0)), lattice units.
-  void record_coupling_mass(double surface_mass, double refill_mass, const lbm::FluidSolver& solver);
+  // After a coupled fluid step: this rank's surface and refill mass of the step
+  // (SphereCoupling::last_surface_mass, last_mass_change().net_over(rho0)), lattice units;
+  // summed over the ranks with the face masses by the step's record_fluid_step.
+  void record_coupling_mass(double surface_mass, double refill_mass);
   // The fluid advanced: the fluid values are recomputed when next read.
   void fluid_changed() { fluid_stale_ = true; }
 
@@ -131,6 +132,7 @@ class PoreMonitor {
   void keep_erosive_bursts();
   double fluid_mass_unit() const;
   void add_plane_masses(const lbm::FluidSolver& solver);
+  double coupling_mass_[2] = {0.0, 0.0};  // this rank's, since the last fluid step recorded
   static long long owned_moving_nodes(const lbm::FluidSolver& solver);
   long long last_burst_sample_ = -1;  // the fluid step last fed to the detector
   std::unique_ptr<BurstFileWriter> burst_file_;
