@@ -1,5 +1,11 @@
 #include "lbm/collide_stream.h"
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include <algorithm>
+
 #include "lbm/d3q19.h"
 #include "lbm/node_type.h"
 #include "lbm/streaming_store.h"
@@ -22,44 +28,81 @@ namespace {
 
 using L = D3Q19;
 
-// Rows are processed in chunks of kChunk nodes: the populations are pulled straight from
+// The kernel walks runs of consecutive cells: all owned rows of a y-z plane (or of a part
+// of one, where there are fewer planes than threads) with the x padding between them, so a
+// run is one stretch of memory per population. Pulling with the flat offsets is valid for
+// every owned cell of a run; the ghost cells inside it (the x padding) are computed like
+// solid nodes and get 0 written. No stage reads a ghost slot it has not written in the
+// same step: the halo exchange rewrites all 19 populations of periodic and rank-face
+// ghosts, and at a closed or open edge (ghosts the exchange leaves untouched) static
+// bounce-back and the open faces write every slot a fluid node pulls, each step
+// (FluidSolver::step). Short rows (the paper's rank block: 45 nodes) then no longer cost a
+// partial cache line per row end and population.
+//
+// A run is processed in chunks of kChunk nodes: the populations are pulled straight from
 // the source array, collided, and the results gathered in a small L1-resident SoA buffer
 // (19 contiguous streams) that is written out with streaming stores (no write-allocate:
 // 2 x 19 values moved per update, not 3 x 19). Splitting the arithmetic from the stores
 // lets the compiler vectorise it across the chunk's nodes: it reads the node types as a
 // double mask, since GCC does not vectorise a loop that mixes byte and double lanes.
-// 128 nodes: a row of the 128^3 benchmark is one chunk, so each population's output range
-// has two lines shared with neighbouring rows (its head and tail) instead of three or four;
-// 64 was 10 % slower, 256 (a 39 KB buffer, most of L1) 7 % slower.
+// The tail of a chunk's output that does not fill a cache line is held back and stored
+// with the next chunk's head (streaming_store_keep_tail), so inside a run every line of
+// every population is one vector store.
 constexpr int kChunk = 128;
-// Rows at least this long write their ends (the lines shared with the neighbouring rows)
-// with non-temporal stores too (streaming_store.h): +35 % at 128^3 and +10 % at 64^3,
-// where the ends are 2 of 17 or 9 lines, but -16 % for the paper's rank block (rows of 45:
-// 2 of 6 lines), whose row ends the x halo exchange reads right after, from the cache
-// when they were written with plain stores.
+// Room for the held-back tail before a chunk's values: less than a line.
+constexpr int kHeldBack = int(detail::kCacheLine / sizeof(Real));
+// Rows at least this long write the ends of a run (lines shared with the neighbouring
+// runs) with non-temporal stores too (streaming_store.h); shorter ones with plain stores,
+// which the x halo exchange reads right after from the cache.
 constexpr int kStreamEdgesFromRow = 64;
 // The q loops carry "GCC unroll 19": GCC peels at most 16 iterations by default, and only a
 // fully unrolled loop turns the velocity components into constants (a 2.5x speed-up).
 
+// Cells [first, first + length) of one plane, starting at x = 0 of a row; rows are `pitch`
+// cells apart, of which the first `row` are owned.
+struct Run {
+  std::size_t first;
+  int length;
+  int pitch;
+  int row;
+};
+
+// fluid_mask[i] = 1 for the fluid nodes among run positions [start, start + m), 0 for the
+// other nodes and for the x padding (ghost cells, whatever their type).
+void fill_fluid_mask(const std::uint8_t* __restrict type, const Run& run, int start, int m,
+                     double* __restrict fluid_mask) {
+  for (int i = 0; i < m; ++i) fluid_mask[i] = type[run.first + start + i] == kFluid ? 1.0 : 0.0;
+  for (int row_start = start - start % run.pitch; row_start < start + m; row_start += run.pitch) {
+    const int pad_first = row_start + run.row > start ? row_start + run.row : start;
+    const int pad_end = row_start + run.pitch < start + m ? row_start + run.pitch : start + m;
+    for (int p = pad_first; p < pad_end; ++p) fluid_mask[p - start] = 0.0;
+  }
+}
+
 // kIncompressible: He & Luo's equilibrium, the momentum rho0 u and rho only in the zeroth
 // order (a compile-time choice, so the standard kernel's arithmetic is untouched).
 template <bool kForce, bool kIncompressible>
-void collide_stream_row(const Real* __restrict src, Real* __restrict dst,
-                        const std::uint8_t* __restrict type, std::size_t n, std::size_t base,
-                        int length, const std::ptrdiff_t* off, double omega_plus,
-                        double omega_minus, double fx, double fy, double fz, double rho0) {
+void collide_stream_run(const Real* __restrict src, Real* __restrict dst,
+                        const std::uint8_t* __restrict type, std::size_t n, const Run& run,
+                        const std::ptrdiff_t* off, double omega_plus, double omega_minus,
+                        double fx, double fy, double fz, double rho0) {
   const double source_even = 1.0 - 0.5 * omega_plus;
   const double source_odd = 1.0 - 0.5 * omega_minus;
-  const bool stream_edges = length >= kStreamEdgesFromRow;
-  alignas(64) double f[L::Q][kChunk];
+  const bool stream_edges = run.row >= kStreamEdgesFromRow;
+  alignas(64) double f[L::Q][kHeldBack + kChunk];
   alignas(64) double fluid_mask[kChunk];
-  for (int start = 0; start < length; start += kChunk) {
-    const int m = length - start < kChunk ? length - start : kChunk;
-    const std::size_t first = base + start;
+  int held[L::Q] = {};  // values of each population held back at the head of f[q]
+  for (int start = 0; start < run.length; start += kChunk) {
+    const int m = run.length - start < kChunk ? run.length - start : kChunk;
+    const std::size_t first = run.first + start;
     const Real* pull[L::Q];
+    double* out[L::Q];
     #pragma GCC unroll 19
-    for (int q = 0; q < L::Q; ++q) pull[q] = src + q * n + first - off[q];
-    for (int i = 0; i < m; ++i) fluid_mask[i] = type[first + i] == kFluid ? 1.0 : 0.0;
+    for (int q = 0; q < L::Q; ++q) {
+      pull[q] = src + q * n + first - off[q];
+      out[q] = f[q] + held[q];
+    }
+    fill_fluid_mask(type, run, start, m, fluid_mask);
 #pragma omp simd
     for (int i = 0; i < m; ++i) {
       const double fluid = fluid_mask[i];
@@ -89,9 +132,9 @@ void collide_stream_row(const Real* __restrict src, Real* __restrict dst,
       {  // Rest population: purely even.
         const double feq =
             kIncompressible ? L::w[0] * (rho - rho0 * uu) : L::w[0] * rho * (1.0 - uu);
-        double out = fin[0] - omega_plus * (fin[0] - feq);
-        if (kForce) out += source_even * L::w[0] * (-3.0 * uf);
-        f[0][i] = fluid * out;
+        double result = fin[0] - omega_plus * (fin[0] - feq);
+        if (kForce) result += source_even * L::w[0] * (-3.0 * uf);
+        out[0][i] = fluid * result;
       }
       // Pairs (q, q+1) are opposite: split into symmetric and antisymmetric parts.
       #pragma GCC unroll 19
@@ -110,12 +153,19 @@ void collide_stream_row(const Real* __restrict src, Real* __restrict dst,
           source_plus = source_even * w * (9.0 * cu * cf - 3.0 * uf);
           source_minus = source_odd * w * 3.0 * cf;
         }
-        f[q][i] = fluid * (a - relax_plus - relax_minus + source_plus + source_minus);
-        f[q + 1][i] = fluid * (b - relax_plus + relax_minus + source_plus - source_minus);
+        out[q][i] = fluid * (a - relax_plus - relax_minus + source_plus + source_minus);
+        out[q + 1][i] = fluid * (b - relax_plus + relax_minus + source_plus - source_minus);
       }
     }
+    const bool last = start + m == run.length;
     #pragma GCC unroll 19
-    for (int q = 0; q < L::Q; ++q) detail::streaming_store(dst + q * n + first, f[q], m, stream_edges);
+    for (int q = 0; q < L::Q; ++q) {
+      const int count = held[q] + m;
+      const int kept = detail::streaming_store_keep_tail(dst + q * n + first - held[q], f[q],
+                                                         count, last, stream_edges);
+      for (int i = 0; i < kept; ++i) f[q][i] = f[q][count - kept + i];
+      held[q] = kept;
+    }
   }
 }
 
@@ -128,21 +178,32 @@ void collide_stream(const CollideStreamArgs& a) {
   for (int q = 0; q < L::Q; ++q) off[q] = g.offset(L::c[q][0], L::c[q][1], L::c[q][2]);
   const std::size_t n = g.num_cells();
   const bool forced = a.force[0] != 0.0 || a.force[1] != 0.0 || a.force[2] != 0.0;
-  // The row kernel of the options, chosen once (no option is looked up per cell).
-  const auto row = a.incompressible
-                       ? (forced ? collide_stream_row<true, true> : collide_stream_row<false, true>)
-                       : (forced ? collide_stream_row<true, false> : collide_stream_row<false, false>);
+  // The run kernel of the options, chosen once (no option is looked up per cell).
+  const auto run = a.incompressible
+                       ? (forced ? collide_stream_run<true, true> : collide_stream_run<false, true>)
+                       : (forced ? collide_stream_run<true, false> : collide_stream_run<false, false>);
   const int nx = g.size(0), ny = g.size(1), nz = g.size(2);
+  if (nx <= 0 || ny <= 0 || nz <= 0) return;
+  // Each plane is one run, or a few where there are fewer planes than threads; the runs
+  // do not overlap, so no two threads write the same value.
+#ifdef _OPENMP
+  const int threads = omp_get_max_threads();
+#else
+  const int threads = 1;
+#endif
+  const int parts = std::min(ny, (threads + nz - 1) / nz);
 #pragma omp parallel
   {
 #pragma omp for collapse(2) schedule(static) nowait
     for (int k = 0; k < nz; ++k)
-      for (int j = 0; j < ny; ++j) {
-        const std::size_t base = g.cell(0, j, k);
-        row(a.src, a.dst, a.node_type, n, base, nx, off, a.omega_plus, a.omega_minus,
-            a.force[0], a.force[1], a.force[2], a.rho0);
+      for (int part = 0; part < parts; ++part) {
+        const int j0 = part * ny / parts, j1 = (part + 1) * ny / parts;
+        if (j0 == j1) continue;
+        const Run r{g.cell(0, j0, k), (j1 - j0 - 1) * g.padded(0) + nx, g.padded(0), nx};
+        run(a.src, a.dst, a.node_type, n, r, off, a.omega_plus, a.omega_minus, a.force[0],
+            a.force[1], a.force[2], a.rho0);
       }
-    // Before the region's closing barrier: every thread's rows are in memory after it.
+    // Before the region's closing barrier: every thread's runs are in memory after it.
     detail::streaming_store_fence();
   }
 }

@@ -66,6 +66,33 @@ inline void stream_line(float* to, const double* from) {
 }
 #endif
 
+#if defined(__AVX512F__) || defined(__AVX__)
+// to[i] = Real(from[i]) for first <= i < last, non-temporal or plain.
+template <typename Real>
+inline void store_values(Real* __restrict to, const double* __restrict from, int first, int last,
+                         bool non_temporal) {
+  if (non_temporal)
+    for (int i = first; i < last; ++i) stream_value(to + i, from[i]);
+  else
+    for (int i = first; i < last; ++i) to[i] = static_cast<Real>(from[i]);
+}
+
+// Stores the head of to[0, m) (up to its first line boundary) and the whole lines after
+// it; returns where the tail that does not fill a line starts.
+template <typename Real>
+inline int store_head_and_lines(Real* __restrict to, const double* __restrict from, int m,
+                                bool stream_edges) {
+  constexpr int kPerLine = int(kCacheLine / sizeof(Real));
+  const auto address = reinterpret_cast<std::uintptr_t>(to);
+  int head = int((kCacheLine - address % kCacheLine) % kCacheLine / sizeof(Real));
+  if (address % sizeof(Real) != 0 || head > m) head = m;  // no whole line to stream
+  const int body_end = head + (m - head) / kPerLine * kPerLine;
+  store_values(to, from, 0, head, stream_edges);
+  for (int i = head; i < body_end; i += kPerLine) stream_line(to + i, from + i);
+  return body_end;
+}
+#endif
+
 // to[i] = Real(from[i]) for i < m: the whole lines with non-temporal stores, the head and
 // the tail too where stream_edges, else with plain stores (they stay in the cache, which
 // pays when they are read soon: the halo exchange reads the ends of every row). `from` is
@@ -75,22 +102,29 @@ template <typename Real>
 inline void streaming_store(Real* __restrict to, const double* __restrict from, int m,
                             bool stream_edges = true) {
 #if defined(__AVX512F__) || defined(__AVX__)
-  constexpr int kPerLine = int(kCacheLine / sizeof(Real));
-  const auto address = reinterpret_cast<std::uintptr_t>(to);
-  int head = int((kCacheLine - address % kCacheLine) % kCacheLine / sizeof(Real));
-  if (address % sizeof(Real) != 0 || head > m) head = m;  // no whole line to stream
-  const int body_end = head + (m - head) / kPerLine * kPerLine;
-  if (!stream_edges) {
-    for (int i = 0; i < head; ++i) to[i] = static_cast<Real>(from[i]);
-    for (int i = body_end; i < m; ++i) to[i] = static_cast<Real>(from[i]);
-  }
-  for (int i = 0; i < head && stream_edges; ++i) stream_value(to + i, from[i]);
-  for (int i = head; i < body_end; i += kPerLine) stream_line(to + i, from + i);
-  for (int i = body_end; i < m && stream_edges; ++i) stream_value(to + i, from[i]);
+  const int tail = store_head_and_lines(to, from, m, stream_edges);
+  store_values(to, from, tail, m, stream_edges);
 #else
   (void)stream_edges;
   for (int i = 0; i < m; ++i) to[i] = static_cast<Real>(from[i]);
 #endif
+}
+
+// One chunk of a run of chunks that write consecutive ranges of one stream (the kernel's
+// runs over several rows): as streaming_store, except that a tail which does not fill its
+// line is not stored unless `last`. The count of those values is returned; the caller
+// passes them again at the head of the next chunk, whose range then starts on that line's
+// boundary, so that inside a run every line is stored whole, by one vector store.
+template <typename Real>
+inline int streaming_store_keep_tail(Real* __restrict to, const double* __restrict from, int m,
+                                     bool last, bool stream_edges) {
+#if defined(__AVX512F__) || defined(__AVX__)
+  if (!last) return m - store_head_and_lines(to, from, m, stream_edges);
+#else
+  (void)last;
+#endif
+  streaming_store(to, from, m, stream_edges);
+  return 0;
 }
 
 // Orders this thread's streaming stores before its later stores (they are weakly ordered),
