@@ -4,6 +4,8 @@
 #include <omp.h>
 #endif
 
+#include <unistd.h>
+
 #include <algorithm>
 
 #include "lbm/d3q19.h"
@@ -36,25 +38,30 @@ using L = D3Q19;
 // same step: the halo exchange rewrites all 19 populations of periodic and rank-face
 // ghosts, and at a closed or open edge (ghosts the exchange leaves untouched) static
 // bounce-back and the open faces write every slot a fluid node pulls, each step
-// (FluidSolver::step). Short rows (the paper's rank block: 45 nodes) then no longer cost a
-// partial cache line per row end and population.
+// (FluidSolver::step). Short rows (the paper's rank block: 45 nodes) then write no partial
+// cache line at each row end and population, and the padding costs 2 computed cells a row.
 //
 // A run is processed in chunks of kChunk nodes: the populations are pulled straight from
 // the source array, collided, and the results gathered in a small L1-resident SoA buffer
-// (19 contiguous streams) that is written out with streaming stores (no write-allocate:
-// 2 x 19 values moved per update, not 3 x 19). Splitting the arithmetic from the stores
+// (19 contiguous streams) that is written out, with streaming stores where the arrays are
+// larger than the cache (no write-allocate: 2 x 19 values moved per update, not 3 x 19),
+// with plain ones where the cache holds them. Splitting the arithmetic from the stores
 // lets the compiler vectorise it across the chunk's nodes: it reads the node types as a
 // double mask, since GCC does not vectorise a loop that mixes byte and double lanes.
-// The tail of a chunk's output that does not fill a cache line is held back and stored
-// with the next chunk's head (streaming_store_keep_tail), so inside a run every line of
-// every population is one vector store.
+// With streaming stores, the tail of a chunk's output that does not fill a cache line is
+// held back and stored with the next chunk's head (streaming_store_keep_tail), so inside
+// a run every line of every population is one vector store. 128 nodes: 64 was 10 % and 256
+// (a 39 KB buffer, most of L1) 7 % slower, measured on rows of 128.
 constexpr int kChunk = 128;
 // Room for the held-back tail before a chunk's values: less than a line.
 constexpr int kHeldBack = int(detail::kCacheLine / sizeof(Real));
-// Rows at least this long write the ends of a run (lines shared with the neighbouring
-// runs) with non-temporal stores too (streaming_store.h); shorter ones with plain stores,
-// which the x halo exchange reads right after from the cache.
-constexpr int kStreamEdgesFromRow = 64;
+// Streaming stores pay where the arrays do not stay in the cache between steps (128^3:
+// 670 MB); where they do, they send the output to memory, from where the next step reads
+// it back, and plain stores are faster (paper's rank block, 25 MB, in a 480 MB L3: 1.6x the
+// rows with streamed bodies; 64^3: 1.3x; 128^3: 0.78x; README "Measured figures"). Plain
+// stores when both population arrays take at most this share of the last-level cache, so
+// that a second rank and the coupling's data fit beside them.
+constexpr double kPlainStoresUpToCacheShare = 0.25;
 // The q loops carry "GCC unroll 19": GCC peels at most 16 iterations by default, and only a
 // fully unrolled loop turns the velocity components into constants (a 2.5x speed-up).
 
@@ -84,11 +91,10 @@ void fill_fluid_mask(const std::uint8_t* __restrict type, const Run& run, int st
 template <bool kForce, bool kIncompressible>
 void collide_stream_run(const Real* __restrict src, Real* __restrict dst,
                         const std::uint8_t* __restrict type, std::size_t n, const Run& run,
-                        const std::ptrdiff_t* off, double omega_plus, double omega_minus,
-                        double fx, double fy, double fz, double rho0) {
+                        const std::ptrdiff_t* off, bool streaming, double omega_plus,
+                        double omega_minus, double fx, double fy, double fz, double rho0) {
   const double source_even = 1.0 - 0.5 * omega_plus;
   const double source_odd = 1.0 - 0.5 * omega_minus;
-  const bool stream_edges = run.row >= kStreamEdgesFromRow;
   alignas(64) double f[L::Q][kHeldBack + kChunk];
   alignas(64) double fluid_mask[kChunk];
   int held[L::Q] = {};  // values of each population held back at the head of f[q]
@@ -160,13 +166,29 @@ void collide_stream_run(const Real* __restrict src, Real* __restrict dst,
     const bool last = start + m == run.length;
     #pragma GCC unroll 19
     for (int q = 0; q < L::Q; ++q) {
+      Real* to = dst + q * n + first - held[q];
       const int count = held[q] + m;
-      const int kept = detail::streaming_store_keep_tail(dst + q * n + first - held[q], f[q],
-                                                         count, last, stream_edges);
+      if (!streaming) {
+        for (int i = 0; i < count; ++i) to[i] = static_cast<Real>(f[q][i]);
+        continue;
+      }
+      const int kept = detail::streaming_store_keep_tail(to, f[q], count, last);
       for (int i = 0; i < kept; ++i) f[q][i] = f[q][count - kept + i];
       held[q] = kept;
     }
   }
+}
+
+// Whether a block's two population arrays are larger than kPlainStoresUpToCacheShare of
+// the last-level cache (streaming stores pay); where the cache size is unknown, they are.
+bool arrays_exceed_cache(std::size_t cells) {
+  long cache = 0;
+#ifdef _SC_LEVEL3_CACHE_SIZE
+  cache = sysconf(_SC_LEVEL3_CACHE_SIZE);
+  if (cache <= 0) cache = sysconf(_SC_LEVEL2_CACHE_SIZE);
+#endif
+  const double bytes = 2.0 * L::Q * double(cells) * sizeof(Real);
+  return cache <= 0 || bytes > kPlainStoresUpToCacheShare * double(cache);
 }
 
 }  // namespace
@@ -184,6 +206,9 @@ void collide_stream(const CollideStreamArgs& a) {
                        : (forced ? collide_stream_run<true, false> : collide_stream_run<false, false>);
   const int nx = g.size(0), ny = g.size(1), nz = g.size(2);
   if (nx <= 0 || ny <= 0 || nz <= 0) return;
+  using Stores = CollideStreamArgs::Stores;
+  const bool streaming = a.stores == Stores::kStreaming ||
+                         (a.stores == Stores::kByCacheSize && arrays_exceed_cache(n));
   // Each plane is one run, or a few where there are fewer planes than threads; the runs
   // do not overlap, so no two threads write the same value.
 #ifdef _OPENMP
@@ -200,8 +225,8 @@ void collide_stream(const CollideStreamArgs& a) {
         const int j0 = part * ny / parts, j1 = (part + 1) * ny / parts;
         if (j0 == j1) continue;
         const Run r{g.cell(0, j0, k), (j1 - j0 - 1) * g.padded(0) + nx, g.padded(0), nx};
-        run(a.src, a.dst, a.node_type, n, r, off, a.omega_plus, a.omega_minus, a.force[0],
-            a.force[1], a.force[2], a.rho0);
+        run(a.src, a.dst, a.node_type, n, r, off, streaming, a.omega_plus, a.omega_minus,
+            a.force[0], a.force[1], a.force[2], a.rho0);
       }
     // Before the region's closing barrier: every thread's runs are in memory after it.
     detail::streaming_store_fence();

@@ -4,8 +4,9 @@
 // parts) of what it pulls, every owned non-fluid node zeros, for all four variants
 // (force or not, standard or He & Luo's incompressible equilibrium). The kernel walks runs
 // of several rows with the x padding inside; a wrong offset or a misplaced padding cell
-// shows here as a node off its reference. Its output on the owned nodes is also the same
-// bit for bit on one and two threads and whatever the destination held before.
+// shows here as a node off its reference; both ways of storing (streaming and plain) are
+// checked. Its output on the owned nodes is also the same bit for bit on one and two
+// threads and whatever the destination held before.
 #include <gtest/gtest.h>
 
 #ifdef _OPENMP
@@ -126,8 +127,10 @@ TEST(CollideStream, EveryOwnedNodeGetsItsCollisionOrZero) {
   for (const auto& dims : kBlocks) {
     const KernelCase c = random_case(dims, seed++);
     const std::size_t n = c.layout.num_cells();
-    for (int variant = 0; variant < 4; ++variant) {
-      const lbm::CollideStreamArgs base = c.args(variant & 1, variant & 2);
+    for (int variant = 0; variant < 8; ++variant) {
+      lbm::CollideStreamArgs base = c.args(variant & 1, variant & 2);
+      base.stores = variant & 4 ? lbm::CollideStreamArgs::Stores::kPlain
+                                : lbm::CollideStreamArgs::Stores::kStreaming;
       std::vector<lbm::Real> dst(L::Q * n, lbm::Real(-3.0));
       lbm::CollideStreamArgs a = base;
       a.dst = dst.data();
@@ -152,6 +155,7 @@ TEST(CollideStream, OwnedOutputIsTheSameOnTwoThreadsAndOverAnyOldContent) {
     const KernelCase c = random_case(dims, 99);
     const std::size_t n = c.layout.num_cells();
     lbm::CollideStreamArgs a = c.args(true, false);
+    a.stores = lbm::CollideStreamArgs::Stores::kStreaming;
     std::vector<lbm::Real> one(L::Q * n, lbm::Real(0.0)), two(L::Q * n, lbm::Real(5.0));
     set_threads(1);
     a.dst = one.data();

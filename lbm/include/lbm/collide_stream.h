@@ -22,6 +22,10 @@ struct CollideStreamArgs {
   // He & Luo's incompressible equilibrium with reference density rho0 (FluidParameters).
   bool incompressible = false;
   double rho0 = 1.0;
+  // How the output reaches memory (the values are the same): non-temporal stores for
+  // arrays larger than the cache, plain ones for arrays the cache holds between steps.
+  enum class Stores { kByCacheSize, kStreaming, kPlain };
+  Stores stores = Stores::kByCacheSize;
 };
 
 // Pull stream + TRT collision (Guo forcing split into its even and odd parts) on every

@@ -3,18 +3,17 @@
 //
 // A plain store first reads the destination cache line from memory (write-allocate), so a
 // pull kernel that writes its 19 populations with plain stores moves 3 x 19 values per
-// update instead of 2 x 19. A non-temporal (streaming) store writes without reading: whole,
-// aligned lines as one vector store each, and the head and the tail of a range that do not
-// fill a line as one 8- or 4-byte non-temporal store (movnti) per value. The head and the
-// tail used to be plain stores: a plain store into a line that is not in the cache holds the
-// store buffer until that line has been read, and a row of the kernel has two or three such
-// lines per population; that cost the kernel a third of its time at 128^3 (README,
-// "Measured figures"). On short rows the plain stores are kept (stream_edges false, see
-// collide_stream.cpp): there a third of the lines are row ends that the halo exchange
-// reads next. Other rows (other threads) may write the rest of such a line: the
-// non-temporal stores write only their own bytes, as the plain ones did. Without AVX the
-// plain loop is all there is; the values written are the same either way (only the way
-// they reach memory changes).
+// update instead of 2 x 19 when its arrays do not fit in the cache. A non-temporal
+// (streaming) store writes without reading: whole, aligned lines as one vector store each,
+// and the head and the tail of a range that do not fill a line as one 8- or 4-byte
+// non-temporal store (movnti) per value (a plain store into a line that is not in the cache
+// holds the store buffer until that line has been read: that cost the kernel a third of its
+// time at 128^3, README "Measured figures"). Other threads may write the rest of a head's
+// or a tail's line: the non-temporal stores write only their own bytes, as plain ones do.
+// Arrays that fit in the cache are written with plain stores instead (collide_stream.cpp):
+// streamed, they would be read back from memory by the next step. Without AVX the plain
+// loop is all there is; the values written are the same either way (only the way they
+// reach memory changes).
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -67,45 +66,30 @@ inline void stream_line(float* to, const double* from) {
 #endif
 
 #if defined(__AVX512F__) || defined(__AVX__)
-// to[i] = Real(from[i]) for first <= i < last, non-temporal or plain.
-template <typename Real>
-inline void store_values(Real* __restrict to, const double* __restrict from, int first, int last,
-                         bool non_temporal) {
-  if (non_temporal)
-    for (int i = first; i < last; ++i) stream_value(to + i, from[i]);
-  else
-    for (int i = first; i < last; ++i) to[i] = static_cast<Real>(from[i]);
-}
-
 // Stores the head of to[0, m) (up to its first line boundary) and the whole lines after
 // it; returns where the tail that does not fill a line starts.
 template <typename Real>
-inline int store_head_and_lines(Real* __restrict to, const double* __restrict from, int m,
-                                bool stream_edges) {
+inline int store_head_and_lines(Real* __restrict to, const double* __restrict from, int m) {
   constexpr int kPerLine = int(kCacheLine / sizeof(Real));
   const auto address = reinterpret_cast<std::uintptr_t>(to);
   int head = int((kCacheLine - address % kCacheLine) % kCacheLine / sizeof(Real));
   if (address % sizeof(Real) != 0 || head > m) head = m;  // no whole line to stream
   const int body_end = head + (m - head) / kPerLine * kPerLine;
-  store_values(to, from, 0, head, stream_edges);
+  for (int i = 0; i < head; ++i) stream_value(to + i, from[i]);
   for (int i = head; i < body_end; i += kPerLine) stream_line(to + i, from + i);
   return body_end;
 }
 #endif
 
-// to[i] = Real(from[i]) for i < m: the whole lines with non-temporal stores, the head and
-// the tail too where stream_edges, else with plain stores (they stay in the cache, which
-// pays when they are read soon: the halo exchange reads the ends of every row). `from` is
-// the kernel's 64-byte aligned double buffer. Call streaming_store_fence() before another
-// thread may read what was stored.
+// to[i] = Real(from[i]) for i < m, all with non-temporal stores: the whole lines as one
+// vector store each, the head and the tail value by value. `from` is the kernel's 64-byte
+// aligned double buffer. Call streaming_store_fence() before another thread may read what
+// was stored.
 template <typename Real>
-inline void streaming_store(Real* __restrict to, const double* __restrict from, int m,
-                            bool stream_edges = true) {
+inline void streaming_store(Real* __restrict to, const double* __restrict from, int m) {
 #if defined(__AVX512F__) || defined(__AVX__)
-  const int tail = store_head_and_lines(to, from, m, stream_edges);
-  store_values(to, from, tail, m, stream_edges);
+  for (int i = store_head_and_lines(to, from, m); i < m; ++i) stream_value(to + i, from[i]);
 #else
-  (void)stream_edges;
   for (int i = 0; i < m; ++i) to[i] = static_cast<Real>(from[i]);
 #endif
 }
@@ -117,13 +101,13 @@ inline void streaming_store(Real* __restrict to, const double* __restrict from, 
 // boundary, so that inside a run every line is stored whole, by one vector store.
 template <typename Real>
 inline int streaming_store_keep_tail(Real* __restrict to, const double* __restrict from, int m,
-                                     bool last, bool stream_edges) {
+                                     bool last) {
 #if defined(__AVX512F__) || defined(__AVX__)
-  if (!last) return m - store_head_and_lines(to, from, m, stream_edges);
+  if (!last) return m - store_head_and_lines(to, from, m);
 #else
   (void)last;
 #endif
-  streaming_store(to, from, m, stream_edges);
+  streaming_store(to, from, m);
   return 0;
 }
 
