@@ -182,11 +182,14 @@ void collide_stream_run(const Real* __restrict src, Real* __restrict dst,
 // Whether a block's two population arrays are larger than kPlainStoresUpToCacheShare of
 // the last-level cache (streaming stores pay); where the cache size is unknown, they are.
 bool arrays_exceed_cache(std::size_t cells) {
-  long cache = 0;
+  static const long cache = [] {  // asked once: in a virtual machine cpuid traps
+    long size = 0;
 #ifdef _SC_LEVEL3_CACHE_SIZE
-  cache = sysconf(_SC_LEVEL3_CACHE_SIZE);
-  if (cache <= 0) cache = sysconf(_SC_LEVEL2_CACHE_SIZE);
+    size = sysconf(_SC_LEVEL3_CACHE_SIZE);
+    if (size <= 0) size = sysconf(_SC_LEVEL2_CACHE_SIZE);
 #endif
+    return size;
+  }();
   const double bytes = 2.0 * L::Q * double(cells) * sizeof(Real);
   return cache <= 0 || bytes > kPlainStoresUpToCacheShare * double(cache);
 }
@@ -201,9 +204,10 @@ void collide_stream(const CollideStreamArgs& a) {
   const std::size_t n = g.num_cells();
   const bool forced = a.force[0] != 0.0 || a.force[1] != 0.0 || a.force[2] != 0.0;
   // The run kernel of the options, chosen once (no option is looked up per cell).
-  const auto run = a.incompressible
-                       ? (forced ? collide_stream_run<true, true> : collide_stream_run<false, true>)
-                       : (forced ? collide_stream_run<true, false> : collide_stream_run<false, false>);
+  const auto run = a.incompressible ? (forced ? collide_stream_run<true, true>
+                                              : collide_stream_run<false, true>)
+                                    : (forced ? collide_stream_run<true, false>
+                                              : collide_stream_run<false, false>);
   const int nx = g.size(0), ny = g.size(1), nz = g.size(2);
   if (nx <= 0 || ny <= 0 || nz <= 0) return;
   using Stores = CollideStreamArgs::Stores;
