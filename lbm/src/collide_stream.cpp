@@ -182,7 +182,7 @@ void collide_stream_run(const Real* __restrict src, Real* __restrict dst,
 // Whether a block's two population arrays are larger than kPlainStoresUpToCacheShare of
 // the last-level cache (streaming stores pay); where the cache size is unknown, they are.
 bool arrays_exceed_cache(std::size_t cells) {
-  static const long cache = [] {  // asked once: in a virtual machine cpuid traps
+  static const long cache = [] {  // asked once: it may run cpuid, slow in a VM
     long size = 0;
 #ifdef _SC_LEVEL3_CACHE_SIZE
     size = sysconf(_SC_LEVEL3_CACHE_SIZE);
