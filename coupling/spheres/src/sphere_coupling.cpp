@@ -56,19 +56,21 @@ void SphereCoupling::apply_moving_walls_and_force(const ParticleView& view) {
   {
     StageTimer t(times_.moving_walls);
     build_sphere_links(mapping_, view, solver_.node_types(), links_, &link_scratch_);
-    lbm::apply_links(links_.links, options_.wall_scheme, solver_, &moment_cache_);
+    lbm::apply_links(links_.links, options_.wall_scheme, solver_, &moment_cache_, nullptr,
+                     &link_populations_);
   }
   {
     StageTimer t(times_.force);
     loads_.reset(view.num_total);
-    add_momentum_exchange(links_, options_.momentum_exchange, solver_, loads_);
+    add_momentum_exchange(links_, link_populations_, options_.momentum_exchange,
+                          solver_.parameters().rho0, loads_);
   }
   // After the momentum exchange has read the returned populations: the correction moves no
   // momentum, so the force is the scheme's own.
   StageTimer t(times_.moving_walls);
   const bool conserve = options_.conserve_link_mass;
   link_defect_ = lbm::moving_wall::link_mass_defect(links_.links, solver_.parameters().rho0,
-                                                    solver_.layout(), solver_.populations(),
+                                                    link_populations_,
                                                     conserve ? &defect_per_link_ : nullptr);
   if (conserve)
     lbm::moving_wall::restore_link_mass(links_.links, solver_.layout(), solver_.node_types(),

@@ -13,6 +13,7 @@ double BounceBack::returning_population(const BoundaryLink& link, std::ptrdiff_t
 
 template void apply<BounceBack>(const std::vector<BoundaryLink>&, const BounceBack&,
                                 const BlockLayout&, PopulationField&,
-                                std::vector<std::array<double, 3>>*, int);
+                                std::vector<std::array<double, 3>>*, int,
+                                std::vector<LinkPopulations>*);
 
 }  // namespace lbm::moving_wall

@@ -18,11 +18,12 @@ const Scheme& for_thread(const Scheme& scheme, int /*t*/) {
   return scheme;
 }
 
-// Links [first, last); `momentum`, if non-null, already sized.
+// Links [first, last); `momentum` and `populations`, if non-null, already sized.
 template <class Scheme>
 void apply_range(const std::vector<BoundaryLink>& links, std::size_t first, std::size_t last,
                  const Scheme& scheme, const BlockLayout& layout, PopulationField& f,
-                 std::vector<std::array<double, 3>>* momentum) {
+                 std::vector<std::array<double, 3>>* momentum,
+                 std::vector<LinkPopulations>* populations) {
   using L = D3Q19;
   std::ptrdiff_t offsets[L::Q];  // cell-index step of c_q, once per call
   for (int q = 0; q < L::Q; ++q) offsets[q] = layout.offset(L::c[q][0], L::c[q][1], L::c[q][2]);
@@ -31,7 +32,9 @@ void apply_range(const std::vector<BoundaryLink>& links, std::size_t first, std:
     const int q = link.q;
     const std::ptrdiff_t offset = offsets[q];
     const double back = scheme.returning_population(link, offset, f);
-    f.at(L::opposite(q), link.fluid_cell + offset) = static_cast<Real>(back);
+    Real& slot = f.at(L::opposite(q), link.fluid_cell + offset);
+    slot = static_cast<Real>(back);
+    if (populations) (*populations)[l] = {f.at(q, link.fluid_cell), slot};
     if (momentum) {
       const double m = f.at(q, link.fluid_cell) + back;
       (*momentum)[l] = {m * L::c[q][0], m * L::c[q][1], m * L::c[q][2]};
@@ -41,11 +44,13 @@ void apply_range(const std::vector<BoundaryLink>& links, std::size_t first, std:
 
 template <class Scheme>
 void apply(const std::vector<BoundaryLink>& links, const Scheme& scheme, const BlockLayout& layout,
-           PopulationField& f, std::vector<std::array<double, 3>>* momentum, int threads) {
+           PopulationField& f, std::vector<std::array<double, 3>>* momentum, int threads,
+           std::vector<LinkPopulations>* populations) {
   if (momentum) momentum->resize(links.size());
+  if (populations) populations->resize(links.size());
   const std::size_t n = links.size();
   if (threads <= 1) {
-    apply_range(links, 0, n, scheme, layout, f, momentum);
+    apply_range(links, 0, n, scheme, layout, f, momentum, populations);
     return;
   }
 #pragma omp parallel num_threads(threads)
@@ -56,7 +61,7 @@ void apply(const std::vector<BoundaryLink>& links, const Scheme& scheme, const B
     const int t = 0, nt = 1;
 #endif
     apply_range(links, n * std::size_t(t) / std::size_t(nt), n * std::size_t(t + 1) / std::size_t(nt),
-                for_thread(scheme, t), layout, f, momentum);
+                for_thread(scheme, t), layout, f, momentum, populations);
   }
 }
 

@@ -37,6 +37,7 @@ double MeiLuoShyy::returning_population(const BoundaryLink& link, std::ptrdiff_t
 
 template void apply<MeiLuoShyy>(const std::vector<BoundaryLink>&, const MeiLuoShyy&,
                                 const BlockLayout&, PopulationField&,
-                                std::vector<std::array<double, 3>>*, int);
+                                std::vector<std::array<double, 3>>*, int,
+                                std::vector<LinkPopulations>*);
 
 }  // namespace lbm::moving_wall

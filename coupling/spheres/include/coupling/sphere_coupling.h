@@ -82,6 +82,7 @@ class SphereCoupling {
   MassChange mass_;
   lbm::moving_wall::LinkMassDefect link_defect_;
   double surface_mass_ = 0.0;
+  std::vector<lbm::LinkPopulations> link_populations_;  // per link, from the moving walls
   std::vector<double> defect_per_link_;  // reused every step
   StageTimes times_;
 };

@@ -40,11 +40,12 @@ struct LinkMassDefect {
   double absolute = 0.0;
 };
 
-// The defects of populations already written by apply_links (call it after apply_links and
-// after the momentum exchange has read them, before streaming); per link into `per_link`
-// if non-null (kept by the caller so that it is allocated once).
+// The defects of the links' populations as apply_links left them (its `populations`
+// output: no lattice access); per link into `per_link` if non-null (kept by the caller so
+// that it is allocated once). Call restore_link_mass after the momentum exchange has read
+// the returned populations, before streaming.
 LinkMassDefect link_mass_defect(const std::vector<BoundaryLink>& links, double rho0,
-                                const BlockLayout& layout, const PopulationField& f,
+                                const std::vector<LinkPopulations>& populations,
                                 std::vector<double>* per_link = nullptr);
 
 // Mass the moving-wall terms of the links give the fluid in one step: -sum_l 6 w_q rho0 c_q.u_w,
