@@ -22,4 +22,8 @@ template void apply<Bouzidi>(const std::vector<BoundaryLink>&, const Bouzidi&, c
                              PopulationField&, std::vector<std::array<double, 3>>*, int,
                              std::vector<LinkPopulations>*);
 
+template void sweep<Bouzidi>(const std::vector<BoundaryLink>&, const LinkSweep&, const Bouzidi&,
+                             const BlockLayout&, double, const LinkMassRestorer&, PopulationField&,
+                             std::vector<LinkPopulations>&, std::vector<double>&);
+
 }  // namespace lbm::moving_wall

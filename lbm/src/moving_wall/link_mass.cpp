@@ -10,12 +10,17 @@ namespace lbm::moving_wall {
 
 namespace {
 using L = D3Q19;
+}  // namespace
+
+void LinkMassDefect::add(double defect) {
+  net += defect;
+  absolute += std::abs(defect);
+}
 
 // delta_l: what the link returned minus what half-way bounce-back would have returned.
-double defect_of(const BoundaryLink& link, double rho0, const LinkPopulations& pops) {
-  return pops.back - (pops.out - wall_term(link.q, rho0, link.wall_velocity));
+double link_defect(const BoundaryLink& link, double rho0, const LinkPopulations& populations) {
+  return populations.back - (populations.out - wall_term(link.q, rho0, link.wall_velocity));
 }
-}  // namespace
 
 LinkMassDefect link_mass_defect(const std::vector<BoundaryLink>& links, double rho0,
                                 const std::vector<LinkPopulations>& populations,
@@ -23,10 +28,9 @@ LinkMassDefect link_mass_defect(const std::vector<BoundaryLink>& links, double r
   if (per_link) per_link->resize(links.size());
   LinkMassDefect total;
   for (std::size_t l = 0; l < links.size(); ++l) {
-    const double d = defect_of(links[l], rho0, populations[l]);
+    const double d = link_defect(links[l], rho0, populations[l]);
     if (per_link) (*per_link)[l] = d;
-    total.net += d;
-    total.absolute += std::abs(d);
+    total.add(d);
   }
   return total;
 }
@@ -37,39 +41,42 @@ double moving_surface_mass(const std::vector<BoundaryLink>& links, double rho0) 
   return mass;
 }
 
+LinkMassRestorer::LinkMassRestorer(const BlockLayout& layout,
+                                   const std::vector<std::uint8_t>& node_type, PopulationField& f)
+    : type_(node_type.data()) {
+  // Taken once: through a Real& the field's own pointer and size would be reloaded after
+  // every store, 19 times per link.
+  for (int p = 0; p < L::Q; ++p) {
+    pop_[p] = f.q(p);
+    offset_[p] = layout.offset(L::c[p][0], L::c[p][1], L::c[p][2]);
+  }
+}
+
+void LinkMassRestorer::remove(std::size_t x, double d) const {
+  double at_rest = 0.0;
+  // Population p reaches x from x - c_p in the next (pull) streaming.
+  for (int p = 0; p < L::Q; ++p) {
+    const std::size_t from = x - offset_[p];
+    // A ghost beyond an open face is written after this stage (the open boundary fills
+    // it): its share goes on x's own rest population, so that x's mass changes by the
+    // whole defect and the budget's books (PoreMonitor) stay exact.
+    if (type_[from] == kOpen) {
+      at_rest += L::w[p] * d;
+      continue;
+    }
+    Real& slot = pop_[p][from];
+    slot = static_cast<Real>(slot - L::w[p] * d);
+  }
+  if (at_rest != 0.0) pop_[0][x] = static_cast<Real>(pop_[0][x] - at_rest);
+}
+
 void restore_link_mass(const std::vector<BoundaryLink>& links, const BlockLayout& layout,
                        const std::vector<std::uint8_t>& node_type,
                        const std::vector<double>& per_link, PopulationField& f) {
   // The defects are all measured before any is removed: removing one writes slots that
   // another link of the same node reads as its returned population.
-  // The arrays' addresses and the offsets are taken once per call: through a Real& the
-  // field's own pointer and size would be reloaded after every store, 19 times per link.
-  Real* pop[L::Q];
-  std::ptrdiff_t offset[L::Q];
-  for (int p = 0; p < L::Q; ++p) {
-    pop[p] = f.q(p);
-    offset[p] = layout.offset(L::c[p][0], L::c[p][1], L::c[p][2]);
-  }
-  const std::uint8_t* type = node_type.data();
-  for (std::size_t l = 0; l < links.size(); ++l) {
-    const std::size_t x = links[l].fluid_cell;
-    const double d = per_link[l];
-    double at_rest = 0.0;
-    // Population p reaches x from x - c_p in the next (pull) streaming.
-    for (int p = 0; p < L::Q; ++p) {
-      const std::size_t from = x - offset[p];
-      // A ghost beyond an open face is written after this stage (the open boundary fills
-      // it): its share goes on x's own rest population, so that x's mass changes by the
-      // whole defect and the budget's books (PoreMonitor) stay exact.
-      if (type[from] == kOpen) {
-        at_rest += L::w[p] * d;
-        continue;
-      }
-      Real& slot = pop[p][from];
-      slot = static_cast<Real>(slot - L::w[p] * d);
-    }
-    if (at_rest != 0.0) pop[0][x] = static_cast<Real>(pop[0][x] - at_rest);
-  }
+  const LinkMassRestorer restorer(layout, node_type, f);
+  for (std::size_t l = 0; l < links.size(); ++l) restorer.remove(links[l].fluid_cell, per_link[l]);
 }
 
 }  // namespace lbm::moving_wall

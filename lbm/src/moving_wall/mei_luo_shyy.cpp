@@ -40,4 +40,8 @@ template void apply<MeiLuoShyy>(const std::vector<BoundaryLink>&, const MeiLuoSh
                                 std::vector<std::array<double, 3>>*, int,
                                 std::vector<LinkPopulations>*);
 
+template void sweep<MeiLuoShyy>(const std::vector<BoundaryLink>&, const LinkSweep&, const MeiLuoShyy&,
+                                const BlockLayout&, double, const LinkMassRestorer&, PopulationField&,
+                                std::vector<LinkPopulations>&, std::vector<double>&);
+
 }  // namespace lbm::moving_wall

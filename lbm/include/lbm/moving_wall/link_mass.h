@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "lbm/block_layout.h"
+#include "lbm/d3q19.h"
 #include "lbm/link_boundary.h"
 #include "lbm/population_field.h"
 
@@ -38,7 +39,11 @@ namespace lbm::moving_wall {
 struct LinkMassDefect {
   double net = 0.0;
   double absolute = 0.0;
+  void add(double defect);  // one more link, in link order
 };
+
+// delta_l of one link from its populations (apply_links' `populations` output).
+double link_defect(const BoundaryLink& link, double rho0, const LinkPopulations& populations);
 
 // The defects of the links' populations as apply_links left them (its `populations`
 // output: no lattice access); per link into `per_link` if non-null (kept by the caller so
@@ -56,6 +61,20 @@ LinkMassDefect link_mass_defect(const std::vector<BoundaryLink>& links, double r
 // the lattice through an open end (its rear draws fluid in, its front is outside), or one in
 // contact with a wall or another sphere. The fluid budget books it (doc/stability.md).
 double moving_surface_mass(const std::vector<BoundaryLink>& links, double rho0);
+
+// The correction's writes, one link at a time: remove(x, delta_l) takes delta_l w_p from
+// each slot f_p(x - c_p). The arrays' addresses and offsets are taken once, at construction.
+class LinkMassRestorer {
+ public:
+  LinkMassRestorer(const BlockLayout& layout, const std::vector<std::uint8_t>& node_type,
+                   PopulationField& f);
+  void remove(std::size_t fluid_cell, double defect) const;
+
+ private:
+  Real* pop_[D3Q19::Q];
+  std::ptrdiff_t offset_[D3Q19::Q];
+  const std::uint8_t* type_;
+};
 
 // Removes the measured defects as described above; per_link from link_mass_defect.
 // Slots in a ghost beyond an open face (rewritten by the open boundary stage after this one)
