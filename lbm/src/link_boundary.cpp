@@ -31,13 +31,16 @@ int link_threads(std::size_t num_links) {
 void apply_without_moments(const std::vector<BoundaryLink>& links, MovingWallScheme scheme,
                            double rho0, const BlockLayout& layout,
                            const std::vector<std::uint8_t>& node_type, PopulationField& f,
-                           std::vector<std::array<double, 3>>* momentum, int threads) {
+                           std::vector<std::array<double, 3>>* momentum, int threads,
+                           std::vector<LinkPopulations>* populations) {
   switch (scheme) {
     case MovingWallScheme::kBounceBack:
-      moving_wall::apply(links, moving_wall::BounceBack{rho0}, layout, f, momentum, threads);
+      moving_wall::apply(links, moving_wall::BounceBack{rho0}, layout, f, momentum, threads,
+                         populations);
       return;
     case MovingWallScheme::kBouzidi:
-      moving_wall::apply(links, moving_wall::Bouzidi{rho0, &node_type}, layout, f, momentum, threads);
+      moving_wall::apply(links, moving_wall::Bouzidi{rho0, &node_type}, layout, f, momentum, threads,
+                         populations);
       return;
     case MovingWallScheme::kMeiLuoShyy:
       break;
@@ -50,13 +53,14 @@ void apply_without_moments(const std::vector<BoundaryLink>& links, MovingWallSch
 
 void apply_links(const std::vector<BoundaryLink>& links, MovingWallScheme scheme,
                  FluidSolver& solver, moving_wall::MomentCache* cache,
-                 std::vector<std::array<double, 3>>* momentum) {
+                 std::vector<std::array<double, 3>>* momentum,
+                 std::vector<LinkPopulations>* populations) {
   // The links of spheres and walls are distinct and leave fluid nodes: they may be split over
   // threads (moving_wall::apply).
   const int threads = link_threads(links.size());
   if (scheme != MovingWallScheme::kMeiLuoShyy) {
     apply_without_moments(links, scheme, solver.parameters().rho0, solver.layout(),
-                          solver.node_types(), solver.populations(), momentum, threads);
+                          solver.node_types(), solver.populations(), momentum, threads, populations);
     return;
   }
   moving_wall::MomentCache local;
@@ -64,13 +68,14 @@ void apply_links(const std::vector<BoundaryLink>& links, MovingWallScheme scheme
   moments.begin(solver.layout().num_cells(), threads);
   const moving_wall::MeiLuoShyy mls{solver.parameters().rho0, 1.0 / solver.trt().omega_plus,
                                     solver.parameters().body_force, &solver.node_types(), &moments};
-  moving_wall::apply(links, mls, solver.layout(), solver.populations(), momentum, threads);
+  moving_wall::apply(links, mls, solver.layout(), solver.populations(), momentum, threads,
+                     populations);
 }
 
 void apply_links(const std::vector<BoundaryLink>& links, MovingWallScheme scheme, double rho0,
                  const BlockLayout& layout, const std::vector<std::uint8_t>& node_type,
                  PopulationField& f, std::vector<std::array<double, 3>>* momentum) {
-  apply_without_moments(links, scheme, rho0, layout, node_type, f, momentum, 1);
+  apply_without_moments(links, scheme, rho0, layout, node_type, f, momentum, 1, nullptr);
 }
 
 }  // namespace lbm

@@ -1,6 +1,8 @@
 // The coupling stages against slow, obviously-correct references, bit for bit: the mapping
 // against a scan of every sphere's whole bounding box, the links against a scan of every
-// covered cell in every direction, and the stages split over two OpenMP threads against one.
+// covered cell in every direction, the stages split over two OpenMP threads against one (with
+// more than one thread the moving walls and the link mass correction run one after the other,
+// with one as the sweep of lbm/moving_wall/link_sweep.h), and that sweep against the stages.
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -196,4 +198,53 @@ TEST(CouplingReference, TwoThreadsGiveTheOneThreadStepBitForBit) {
     EXPECT_TRUE(same_bits(one.loads.force.data(), two.loads.force.data(), one.loads.force.size() * sizeof(Vec3)));
     EXPECT_TRUE(same_bits(one.loads.torque.data(), two.loads.torque.data(), one.loads.torque.size() * sizeof(Vec3)));
   }
+}
+
+// The sweep that interleaves the moving walls with the link mass correction
+// (lbm/moving_wall/link_sweep.h) against the three stages one after the other, on one thread.
+TEST(CouplingReference, LinkSweepGivesTheSeparateStagesBitForBit) {
+#ifdef _OPENMP
+  const int before = omp_get_max_threads();
+  omp_set_num_threads(1);
+#endif
+  for (auto scheme : {lbm::MovingWallScheme::kMeiLuoShyy, lbm::MovingWallScheme::kBouzidi,
+                      lbm::MovingWallScheme::kBounceBack}) {
+    auto solver = solver_with_a_wall();
+    const ParticleSet p = crowded_spheres();
+    SphereCoupling coupling(*solver);
+    coupling.map_and_refill(p.view(true));
+    SphereLinks links;
+    build_sphere_links(coupling.mapping(), p.view(true), solver->node_types(), links);
+    lbm::PopulationField& f = solver->populations();
+    const lbm::PopulationField::Storage start = f.raw();
+    const double rho0 = solver->parameters().rho0;
+
+    lbm::moving_wall::MomentCache cache;
+    std::vector<lbm::LinkPopulations> stages_populations, sweep_populations;
+    std::vector<double> stages_defects, sweep_defects;
+    lbm::apply_links(links.links, scheme, *solver, &cache, nullptr, &stages_populations);
+    const auto stages = lbm::moving_wall::link_mass_defect(links.links, rho0, stages_populations,
+                                                           &stages_defects);
+    lbm::moving_wall::restore_link_mass(links.links, solver->layout(), solver->node_types(),
+                                        stages_defects, f);
+    const lbm::PopulationField::Storage after_stages = f.raw();
+
+    f.raw() = start;
+    lbm::moving_wall::LinkSweep order;
+    const auto swept = lbm::moving_wall::apply_links_and_restore_mass(
+        links.links, scheme, *solver, cache, order, sweep_populations, sweep_defects);
+    ASSERT_GT(order.lag(), 1u);
+    EXPECT_TRUE(same_bits(after_stages.data(), f.raw().data(), start.size() * sizeof(lbm::Real)))
+        << lbm::moving_wall::label(scheme);
+    ASSERT_EQ(stages_defects.size(), sweep_defects.size());
+    EXPECT_TRUE(same_bits(stages_defects.data(), sweep_defects.data(), stages_defects.size() * sizeof(double)));
+    EXPECT_TRUE(same_bits(stages_populations.data(), sweep_populations.data(),
+                          stages_populations.size() * sizeof(lbm::LinkPopulations)));
+    EXPECT_TRUE(same_bits(&stages.net, &swept.net, sizeof(double)));
+    EXPECT_TRUE(same_bits(&stages.absolute, &swept.absolute, sizeof(double)));
+    EXPECT_NE(stages.absolute, 0.0);
+  }
+#ifdef _OPENMP
+  omp_set_num_threads(before);
+#endif
 }

@@ -16,19 +16,13 @@ using L = lbm::D3Q19;
 // Links [first, last), which hold every link of their particles: each particle's sums run
 // over its links in order, whatever the split.
 template <bool kGalilean>
-void sum_links(const SphereLinks& sl, std::size_t first, std::size_t last,
-               const lbm::FluidSolver& solver, HydrodynamicLoads& loads) {
-  const auto& layout = solver.layout();
-  const lbm::PopulationField& f = solver.populations();
-  const double rho0 = solver.parameters().rho0;
-  std::ptrdiff_t offset[L::Q];  // cell-index step of c_q
-  for (int q = 0; q < L::Q; ++q) offset[q] = layout.offset(L::c[q][0], L::c[q][1], L::c[q][2]);
+void sum_links(const SphereLinks& sl, const std::vector<lbm::LinkPopulations>& populations,
+               std::size_t first, std::size_t last, double rho0, HydrodynamicLoads& loads) {
   for (std::size_t l = first; l < last; ++l) {
     const lbm::BoundaryLink& link = sl.links[l];
     const int q = link.q;
-    const std::size_t wall = link.fluid_cell + offset[q];
-    const double out = f.at(q, link.fluid_cell);
-    const double back = f.at(L::opposite(q), wall);
+    const double out = populations[l].out;
+    const double back = populations[l].back;
     // The reference pressure's share 2 w_q rho0 is removed per link: over a closed link set
     // it sums to zero exactly (as many links along +c_q as along -c_q), but where a sphere
     // touches a wall or another sphere and its covered nodes lose their fluid neighbours
@@ -62,7 +56,8 @@ std::size_t particle_boundary(const SphereLinks& sl, std::size_t l) {
 constexpr std::size_t kMinLinksPerThread = 256;
 
 template <bool kGalilean>
-void sum_all_links(const SphereLinks& sl, const lbm::FluidSolver& solver, HydrodynamicLoads& loads) {
+void sum_all_links(const SphereLinks& sl, const std::vector<lbm::LinkPopulations>& populations,
+                   double rho0, HydrodynamicLoads& loads) {
   const std::size_t n = sl.links.size();
   int threads = 1;
 #ifdef _OPENMP
@@ -72,7 +67,7 @@ void sum_all_links(const SphereLinks& sl, const lbm::FluidSolver& solver, Hydrod
     threads = std::max(1, std::min(omp_get_max_threads(), int(n / kMinLinksPerThread)));
 #endif
   if (threads <= 1) {
-    sum_links<kGalilean>(sl, 0, n, solver, loads);
+    sum_links<kGalilean>(sl, populations, 0, n, rho0, loads);
     return;
   }
   // Blocks of whole particles, one per thread: no two threads add to one particle.
@@ -83,18 +78,19 @@ void sum_all_links(const SphereLinks& sl, const lbm::FluidSolver& solver, Hydrod
 #else
     const std::size_t t = 0, nt = 1;
 #endif
-    sum_links<kGalilean>(sl, particle_boundary(sl, n * t / nt), particle_boundary(sl, n * (t + 1) / nt),
-                         solver, loads);
+    sum_links<kGalilean>(sl, populations, particle_boundary(sl, n * t / nt),
+                         particle_boundary(sl, n * (t + 1) / nt), rho0, loads);
   }
 }
 }  // namespace
 
-void add_momentum_exchange(const SphereLinks& links, MomentumExchange method,
-                           const lbm::FluidSolver& solver, HydrodynamicLoads& loads) {
+void add_momentum_exchange(const SphereLinks& links,
+                           const std::vector<lbm::LinkPopulations>& populations,
+                           MomentumExchange method, double rho0, HydrodynamicLoads& loads) {
   if (method == MomentumExchange::kGalileanInvariant)
-    sum_all_links<true>(links, solver, loads);
+    sum_all_links<true>(links, populations, rho0, loads);
   else
-    sum_all_links<false>(links, solver, loads);
+    sum_all_links<false>(links, populations, rho0, loads);
 }
 
 }  // namespace coupling

@@ -53,28 +53,30 @@ void SphereCoupling::map_and_refill(const ParticleView& view) {
 }
 
 void SphereCoupling::apply_moving_walls_and_force(const ParticleView& view) {
+  const double rho0 = solver_.parameters().rho0;
+  const bool conserve = options_.conserve_link_mass;
   {
     StageTimer t(times_.moving_walls);
     build_sphere_links(mapping_, view, solver_.node_types(), links_, &link_scratch_);
-    lbm::apply_links(links_.links, options_.wall_scheme, solver_, &moment_cache_);
+    if (conserve) {
+      // The moving walls, their mass defect and its correction in one sweep over the lattice
+      // (lbm/moving_wall/link_sweep.h); the correction moves no momentum, and the momentum
+      // exchange below reads the returned populations as the moving walls recorded them, so
+      // the force is the scheme's own.
+      link_defect_ = lbm::moving_wall::apply_links_and_restore_mass(
+          links_.links, options_.wall_scheme, solver_, moment_cache_, link_sweep_,
+          link_populations_, defect_per_link_);
+    } else {
+      lbm::apply_links(links_.links, options_.wall_scheme, solver_, &moment_cache_, nullptr,
+                       &link_populations_);
+      link_defect_ = lbm::moving_wall::link_mass_defect(links_.links, rho0, link_populations_);
+    }
+    surface_mass_ = lbm::moving_wall::moving_surface_mass(links_.links, rho0) +
+                    (conserve ? 0.0 : link_defect_.net);
   }
-  {
-    StageTimer t(times_.force);
-    loads_.reset(view.num_total);
-    add_momentum_exchange(links_, options_.momentum_exchange, solver_, loads_);
-  }
-  // After the momentum exchange has read the returned populations: the correction moves no
-  // momentum, so the force is the scheme's own.
-  StageTimer t(times_.moving_walls);
-  const bool conserve = options_.conserve_link_mass;
-  link_defect_ = lbm::moving_wall::link_mass_defect(links_.links, solver_.parameters().rho0,
-                                                    solver_.layout(), solver_.populations(),
-                                                    conserve ? &defect_per_link_ : nullptr);
-  if (conserve)
-    lbm::moving_wall::restore_link_mass(links_.links, solver_.layout(), solver_.node_types(),
-                                        defect_per_link_, solver_.populations());
-  surface_mass_ = lbm::moving_wall::moving_surface_mass(links_.links, solver_.parameters().rho0) +
-                  (conserve ? 0.0 : link_defect_.net);
+  StageTimer t(times_.force);
+  loads_.reset(view.num_total);
+  add_momentum_exchange(links_, link_populations_, options_.momentum_exchange, rho0, loads_);
 }
 
 void SphereCoupling::step(const ParticleView& view) {

@@ -29,14 +29,17 @@ struct BoundaryLink {
 // Writes, for every link, the population f_{-q}(x, t+1) into the slot it is pulled from
 // (direction -q at node x + c_q, a non-fluid node), from the post-collision state f*(t), with
 // the scheme chosen once for all links (moving_wall::apply). If `momentum` is non-null it
-// receives, per link, the momentum the fluid gives the wall during the step.
+// receives, per link, the momentum the fluid gives the wall during the step; if
+// `populations` is non-null, per link the two populations the later stages read
+// (moving_wall::LinkPopulations).
 // Any scheme; the solver gives rho0, tau_plus and the body force. `cache` may be null (a
 // temporary one is used); pass a long-lived one when calling every step. Long link lists
 // are split over the OpenMP threads (moving_wall::apply: same result for any number), so
 // the links must be distinct and leave fluid nodes, as those of spheres and walls do.
 void apply_links(const std::vector<BoundaryLink>& links, MovingWallScheme scheme,
                  FluidSolver& solver, moving_wall::MomentCache* cache = nullptr,
-                 std::vector<std::array<double, 3>>* momentum = nullptr);
+                 std::vector<std::array<double, 3>>* momentum = nullptr,
+                 std::vector<LinkPopulations>* populations = nullptr);
 // Bounce-back or Bouzidi only, on bare arrays (Mei-Luo-Shyy needs the solver's tau and body
 // force: std::invalid_argument).
 void apply_links(const std::vector<BoundaryLink>& links, MovingWallScheme scheme, double rho0,

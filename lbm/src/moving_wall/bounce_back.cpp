@@ -13,6 +13,11 @@ double BounceBack::returning_population(const BoundaryLink& link, std::ptrdiff_t
 
 template void apply<BounceBack>(const std::vector<BoundaryLink>&, const BounceBack&,
                                 const BlockLayout&, PopulationField&,
-                                std::vector<std::array<double, 3>>*, int);
+                                std::vector<std::array<double, 3>>*, int,
+                                std::vector<LinkPopulations>*);
+
+template void sweep<BounceBack>(const std::vector<BoundaryLink>&, const LinkSweep&, const BounceBack&,
+                                const BlockLayout&, double, const LinkMassRestorer&, PopulationField&,
+                                std::vector<LinkPopulations>&, std::vector<double>&);
 
 }  // namespace lbm::moving_wall

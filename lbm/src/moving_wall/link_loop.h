@@ -1,12 +1,15 @@
 #pragma once
-// The loop every moving-wall scheme runs over its links (declared in
-// lbm/moving_wall/moving_wall_scheme.h); each scheme's source file instantiates it, so the
-// per-link formula is inlined and no link branches on the scheme.
+// The loops every moving-wall scheme runs over its links (apply, declared in
+// lbm/moving_wall/moving_wall_scheme.h, and sweep, in link_sweep.h); each scheme's source
+// file instantiates them, so the per-link formula is inlined and no link branches on the
+// scheme.
 #ifdef _OPENMP
 #include <omp.h>
 #endif
 
 #include "lbm/link_boundary.h"
+#include "lbm/moving_wall/link_mass.h"
+#include "lbm/moving_wall/link_sweep.h"
 #include "lbm/moving_wall/moving_wall_scheme.h"
 
 namespace lbm::moving_wall {
@@ -18,34 +21,77 @@ const Scheme& for_thread(const Scheme& scheme, int /*t*/) {
   return scheme;
 }
 
-// Links [first, last); `momentum`, if non-null, already sized.
+// The cell-index steps of the 19 directions.
+struct DirectionOffsets {
+  std::ptrdiff_t of[D3Q19::Q];
+  explicit DirectionOffsets(const BlockLayout& layout) {
+    for (int q = 0; q < D3Q19::Q; ++q) of[q] = layout.offset(D3Q19::c[q][0], D3Q19::c[q][1], D3Q19::c[q][2]);
+  }
+};
+
+// Link l; `momentum` and `populations`, if non-null, already sized.
+template <class Scheme>
+inline void apply_link(const std::vector<BoundaryLink>& links, std::size_t l, const Scheme& scheme,
+                       const DirectionOffsets& offsets, PopulationField& f,
+                       std::vector<std::array<double, 3>>* momentum,
+                       std::vector<LinkPopulations>* populations) {
+  using L = D3Q19;
+  const BoundaryLink& link = links[l];
+  const int q = link.q;
+  const std::ptrdiff_t offset = offsets.of[q];
+  const double back = scheme.returning_population(link, offset, f);
+  Real& slot = f.at(L::opposite(q), link.fluid_cell + offset);
+  slot = static_cast<Real>(back);
+  if (populations) (*populations)[l] = {f.at(q, link.fluid_cell), slot};
+  if (momentum) {
+    const double m = f.at(q, link.fluid_cell) + back;
+    (*momentum)[l] = {m * L::c[q][0], m * L::c[q][1], m * L::c[q][2]};
+  }
+}
+
+// Links [first, last).
 template <class Scheme>
 void apply_range(const std::vector<BoundaryLink>& links, std::size_t first, std::size_t last,
                  const Scheme& scheme, const BlockLayout& layout, PopulationField& f,
-                 std::vector<std::array<double, 3>>* momentum) {
-  using L = D3Q19;
-  std::ptrdiff_t offsets[L::Q];  // cell-index step of c_q, once per call
-  for (int q = 0; q < L::Q; ++q) offsets[q] = layout.offset(L::c[q][0], L::c[q][1], L::c[q][2]);
-  for (std::size_t l = first; l < last; ++l) {
-    const BoundaryLink& link = links[l];
-    const int q = link.q;
-    const std::ptrdiff_t offset = offsets[q];
-    const double back = scheme.returning_population(link, offset, f);
-    f.at(L::opposite(q), link.fluid_cell + offset) = static_cast<Real>(back);
-    if (momentum) {
-      const double m = f.at(q, link.fluid_cell) + back;
-      (*momentum)[l] = {m * L::c[q][0], m * L::c[q][1], m * L::c[q][2]};
-    }
+                 std::vector<std::array<double, 3>>* momentum,
+                 std::vector<LinkPopulations>* populations) {
+  const DirectionOffsets offsets(layout);  // once per call
+  for (std::size_t l = first; l < last; ++l)
+    apply_link(links, l, scheme, offsets, f, momentum, populations);
+}
+
+// moving_wall::sweep (link_sweep.h): block b's links through the scheme, their defects
+// measured, then the correction of block b - lag, whose cells no link still to come reads.
+template <class Scheme>
+void sweep(const std::vector<BoundaryLink>& links, const LinkSweep& order, const Scheme& scheme,
+           const BlockLayout& layout, double rho0, const LinkMassRestorer& restorer,
+           PopulationField& f, std::vector<LinkPopulations>& populations,
+           std::vector<double>& per_link) {
+  populations.resize(links.size());
+  per_link.resize(links.size());
+  const DirectionOffsets offsets(layout);
+  const std::size_t blocks = order.num_blocks(), lag = order.lag();
+  for (std::size_t b = 0; b < blocks + lag; ++b) {
+    if (b < blocks)
+      for (const std::uint32_t* l = order.begin(b); l != order.end(b); ++l) {
+        apply_link(links, *l, scheme, offsets, f, nullptr, &populations);
+        per_link[*l] = link_defect(links[*l], rho0, populations[*l]);
+      }
+    if (b >= lag)
+      for (const std::uint32_t* l = order.begin(b - lag); l != order.end(b - lag); ++l)
+        restorer.remove(links[*l].fluid_cell, per_link[*l]);
   }
 }
 
 template <class Scheme>
 void apply(const std::vector<BoundaryLink>& links, const Scheme& scheme, const BlockLayout& layout,
-           PopulationField& f, std::vector<std::array<double, 3>>* momentum, int threads) {
+           PopulationField& f, std::vector<std::array<double, 3>>* momentum, int threads,
+           std::vector<LinkPopulations>* populations) {
   if (momentum) momentum->resize(links.size());
+  if (populations) populations->resize(links.size());
   const std::size_t n = links.size();
   if (threads <= 1) {
-    apply_range(links, 0, n, scheme, layout, f, momentum);
+    apply_range(links, 0, n, scheme, layout, f, momentum, populations);
     return;
   }
 #pragma omp parallel num_threads(threads)
@@ -56,7 +102,7 @@ void apply(const std::vector<BoundaryLink>& links, const Scheme& scheme, const B
     const int t = 0, nt = 1;
 #endif
     apply_range(links, n * std::size_t(t) / std::size_t(nt), n * std::size_t(t + 1) / std::size_t(nt),
-                for_thread(scheme, t), layout, f, momentum);
+                for_thread(scheme, t), layout, f, momentum, populations);
   }
 }
 

@@ -10,37 +10,27 @@ namespace lbm::moving_wall {
 
 namespace {
 using L = D3Q19;
-
-// The cell offsets of the 19 directions, computed once per call (not once per slot).
-struct LinkOffsets {
-  std::ptrdiff_t of[L::Q];
-  explicit LinkOffsets(const BlockLayout& layout) {
-    for (int q = 0; q < L::Q; ++q) of[q] = layout.offset(L::c[q][0], L::c[q][1], L::c[q][2]);
-  }
-};
-
-// delta_l: what the link returned minus what half-way bounce-back would have returned.
-double defect_of(const BoundaryLink& link, double rho0, const LinkOffsets& offsets,
-                 const PopulationField& f) {
-  const int q = link.q;
-  const std::size_t x = link.fluid_cell;
-  const double out = f.at(q, x);  // f*_q(x): travelling into the wall
-  const double back = f.at(L::opposite(q), x + offsets.of[q]);
-  return back - (out - wall_term(q, rho0, link.wall_velocity));
-}
 }  // namespace
 
+void LinkMassDefect::add(double defect) {
+  net += defect;
+  absolute += std::abs(defect);
+}
+
+// delta_l: what the link returned minus what half-way bounce-back would have returned.
+double link_defect(const BoundaryLink& link, double rho0, const LinkPopulations& populations) {
+  return populations.back - (populations.out - wall_term(link.q, rho0, link.wall_velocity));
+}
+
 LinkMassDefect link_mass_defect(const std::vector<BoundaryLink>& links, double rho0,
-                                const BlockLayout& layout, const PopulationField& f,
+                                const std::vector<LinkPopulations>& populations,
                                 std::vector<double>* per_link) {
   if (per_link) per_link->resize(links.size());
-  const LinkOffsets offsets(layout);
   LinkMassDefect total;
   for (std::size_t l = 0; l < links.size(); ++l) {
-    const double d = defect_of(links[l], rho0, offsets, f);
+    const double d = link_defect(links[l], rho0, populations[l]);
     if (per_link) (*per_link)[l] = d;
-    total.net += d;
-    total.absolute += std::abs(d);
+    total.add(d);
   }
   return total;
 }
@@ -51,30 +41,42 @@ double moving_surface_mass(const std::vector<BoundaryLink>& links, double rho0) 
   return mass;
 }
 
+LinkMassRestorer::LinkMassRestorer(const BlockLayout& layout,
+                                   const std::vector<std::uint8_t>& node_type, PopulationField& f)
+    : type_(node_type.data()) {
+  // Taken once: through a Real& the field's own pointer and size would be reloaded after
+  // every store, 19 times per link.
+  for (int p = 0; p < L::Q; ++p) {
+    pop_[p] = f.q(p);
+    offset_[p] = layout.offset(L::c[p][0], L::c[p][1], L::c[p][2]);
+  }
+}
+
+void LinkMassRestorer::remove(std::size_t x, double d) const {
+  double at_rest = 0.0;
+  // Population p reaches x from x - c_p in the next (pull) streaming.
+  for (int p = 0; p < L::Q; ++p) {
+    const std::size_t from = x - offset_[p];
+    // A ghost beyond an open face is written after this stage (the open boundary fills
+    // it): its share goes on x's own rest population, so that x's mass changes by the
+    // whole defect and the budget's books (PoreMonitor) stay exact.
+    if (type_[from] == kOpen) {
+      at_rest += L::w[p] * d;
+      continue;
+    }
+    Real& slot = pop_[p][from];
+    slot = static_cast<Real>(slot - L::w[p] * d);
+  }
+  if (at_rest != 0.0) pop_[0][x] = static_cast<Real>(pop_[0][x] - at_rest);
+}
+
 void restore_link_mass(const std::vector<BoundaryLink>& links, const BlockLayout& layout,
                        const std::vector<std::uint8_t>& node_type,
                        const std::vector<double>& per_link, PopulationField& f) {
   // The defects are all measured before any is removed: removing one writes slots that
   // another link of the same node reads as its returned population.
-  const LinkOffsets offsets(layout);
-  for (std::size_t l = 0; l < links.size(); ++l) {
-    const std::size_t x = links[l].fluid_cell;
-    double at_rest = 0.0;
-    // Population p reaches x from x - c_p in the next (pull) streaming.
-    for (int p = 0; p < L::Q; ++p) {
-      const std::size_t from = x - offsets.of[p];
-      // A ghost beyond an open face is written after this stage (the open boundary fills
-      // it): its share goes on x's own rest population, so that x's mass changes by the
-      // whole defect and the budget's books (PoreMonitor) stay exact.
-      if (node_type[from] == kOpen) {
-        at_rest += L::w[p] * per_link[l];
-        continue;
-      }
-      Real& slot = f.at(p, from);
-      slot = static_cast<Real>(slot - L::w[p] * per_link[l]);
-    }
-    if (at_rest != 0.0) f.at(0, x) = static_cast<Real>(f.at(0, x) - at_rest);
-  }
+  const LinkMassRestorer restorer(layout, node_type, f);
+  for (std::size_t l = 0; l < links.size(); ++l) restorer.remove(links[l].fluid_cell, per_link[l]);
 }
 
 }  // namespace lbm::moving_wall

@@ -37,6 +37,11 @@ double MeiLuoShyy::returning_population(const BoundaryLink& link, std::ptrdiff_t
 
 template void apply<MeiLuoShyy>(const std::vector<BoundaryLink>&, const MeiLuoShyy&,
                                 const BlockLayout&, PopulationField&,
-                                std::vector<std::array<double, 3>>*, int);
+                                std::vector<std::array<double, 3>>*, int,
+                                std::vector<LinkPopulations>*);
+
+template void sweep<MeiLuoShyy>(const std::vector<BoundaryLink>&, const LinkSweep&, const MeiLuoShyy&,
+                                const BlockLayout&, double, const LinkMassRestorer&, PopulationField&,
+                                std::vector<LinkPopulations>&, std::vector<double>&);
 
 }  // namespace lbm::moving_wall

@@ -1,7 +1,7 @@
 #pragma once
 // One coupled fluid step with resolved moving spheres, as a named pipeline of stages
-// (waLBerla's time loop): map -> refill -> exchange_halo -> static walls -> moving walls ->
-// momentum exchange -> link mass correction -> open boundaries -> collide_stream.
+// (waLBerla's time loop): map -> refill -> exchange_halo -> static walls -> moving walls
+// with the link mass correction -> momentum exchange -> open boundaries -> collide_stream.
 #include <chrono>
 
 #include "coupling/boundary/sphere_links.h"
@@ -12,6 +12,7 @@
 #include "lbm/fluid_solver.h"
 #include "lbm/link_boundary.h"
 #include "lbm/moving_wall/link_mass.h"
+#include "lbm/moving_wall/link_sweep.h"
 
 namespace coupling {
 
@@ -78,10 +79,12 @@ class SphereCoupling {
   SphereLinks links_;
   std::vector<SphereLinks> link_scratch_;    // per-thread links, reused every step
   lbm::moving_wall::MomentCache moment_cache_;  // reused every step
+  lbm::moving_wall::LinkSweep link_sweep_;      // reused every step
   HydrodynamicLoads loads_;
   MassChange mass_;
   lbm::moving_wall::LinkMassDefect link_defect_;
   double surface_mass_ = 0.0;
+  std::vector<lbm::LinkPopulations> link_populations_;  // per link, from the moving walls
   std::vector<double> defect_per_link_;  // reused every step
   StageTimes times_;
 };

@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "lbm/block_layout.h"
+#include "lbm/d3q19.h"
 #include "lbm/link_boundary.h"
 #include "lbm/population_field.h"
 
@@ -38,13 +39,18 @@ namespace lbm::moving_wall {
 struct LinkMassDefect {
   double net = 0.0;
   double absolute = 0.0;
+  void add(double defect);  // one more link, in link order
 };
 
-// The defects of populations already written by apply_links (call it after apply_links and
-// after the momentum exchange has read them, before streaming); per link into `per_link`
-// if non-null (kept by the caller so that it is allocated once).
+// delta_l of one link from its populations (apply_links' `populations` output).
+double link_defect(const BoundaryLink& link, double rho0, const LinkPopulations& populations);
+
+// The defects of the links' populations as apply_links left them (its `populations`
+// output: no lattice access); per link into `per_link` if non-null (kept by the caller so
+// that it is allocated once). Call restore_link_mass after the momentum exchange has read
+// the returned populations, before streaming.
 LinkMassDefect link_mass_defect(const std::vector<BoundaryLink>& links, double rho0,
-                                const BlockLayout& layout, const PopulationField& f,
+                                const std::vector<LinkPopulations>& populations,
                                 std::vector<double>* per_link = nullptr);
 
 // Mass the moving-wall terms of the links give the fluid in one step: -sum_l 6 w_q rho0 c_q.u_w,
@@ -55,6 +61,20 @@ LinkMassDefect link_mass_defect(const std::vector<BoundaryLink>& links, double r
 // the lattice through an open end (its rear draws fluid in, its front is outside), or one in
 // contact with a wall or another sphere. The fluid budget books it (doc/stability.md).
 double moving_surface_mass(const std::vector<BoundaryLink>& links, double rho0);
+
+// The correction's writes, one link at a time: remove(x, delta_l) takes delta_l w_p from
+// each slot f_p(x - c_p). The arrays' addresses and offsets are taken once, at construction.
+class LinkMassRestorer {
+ public:
+  LinkMassRestorer(const BlockLayout& layout, const std::vector<std::uint8_t>& node_type,
+                   PopulationField& f);
+  void remove(std::size_t fluid_cell, double defect) const;
+
+ private:
+  Real* pop_[D3Q19::Q];
+  std::ptrdiff_t offset_[D3Q19::Q];
+  const std::uint8_t* type_;
+};
 
 // Removes the measured defects as described above; per_link from link_mass_defect.
 // Slots in a ghost beyond an open face (rewritten by the open boundary stage after this one)

@@ -22,6 +22,15 @@ namespace lbm {
 
 struct BoundaryLink;
 
+// The two populations of a link as the moving-wall stage leaves them: f*_q(x), travelling
+// into the wall, and f_{-q}(x, t+1), the one the scheme returned, as stored (in Real). The
+// later stages (momentum exchange, the link mass defect) read them here, in link order,
+// instead of gathering them again from two of the 19 population arrays.
+struct LinkPopulations {
+  double out = 0.0;
+  double back = 0.0;
+};
+
 enum class MovingWallScheme {
   kBounceBack,  // moving_wall/bounce_back.h
   kBouzidi,     // moving_wall/bouzidi.h
@@ -48,8 +57,9 @@ inline double wall_term(int q, double rho0, const std::array<double, 3>& wall_ve
 // Writes, for every link, scheme.returning_population(...) into the slot it is pulled from
 // (direction -q at the wall node x + c_q). If `momentum` is non-null it receives, per link,
 // the momentum the fluid gives the wall during the step: c_q (f*_q(x) + f_{-q}(x, t+1))
-// (momentum exchange, Ladd 1994; Mei et al. 2002, paper Eq. 2). Instantiated in each
-// scheme's source file, with that file's compile options.
+// (momentum exchange, Ladd 1994; Mei et al. 2002, paper Eq. 2); if `populations` is
+// non-null, the link's two populations (LinkPopulations). Instantiated in each scheme's
+// source file, with that file's compile options.
 // With threads > 1 the links are split into that many contiguous blocks, one per OpenMP
 // thread, each running for_thread(scheme, t). The result is the same for any number of
 // threads: every link writes its own slot (direction -q at its wall node, a non-fluid node)
@@ -57,7 +67,8 @@ inline double wall_term(int q, double rho0, const std::array<double, 3>& wall_ve
 // and leave fluid nodes (as the sphere and wall links are).
 template <class Scheme>
 void apply(const std::vector<BoundaryLink>& links, const Scheme& scheme, const BlockLayout& layout,
-           PopulationField& f, std::vector<std::array<double, 3>>* momentum, int threads = 1);
+           PopulationField& f, std::vector<std::array<double, 3>>* momentum, int threads = 1,
+           std::vector<LinkPopulations>* populations = nullptr);
 
 }  // namespace moving_wall
 }  // namespace lbm

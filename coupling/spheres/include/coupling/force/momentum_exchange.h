@@ -3,7 +3,7 @@
 #include <vector>
 
 #include "coupling/boundary/sphere_links.h"
-#include "lbm/fluid_solver.h"
+#include "lbm/link_boundary.h"
 
 namespace coupling {
 
@@ -40,11 +40,12 @@ struct HydrodynamicLoads {
 // sphere surrounded by fluid; removes the spurious p0 push where its surface has no fluid
 // links, i.e. in contact with a wall or another sphere).
 // Sums over the links (all from owned fluid nodes, so ghost layers never double count),
-// after the moving-wall stage filled the returning populations and before collide_stream.
-// Torque arm: the cut point on the surface. Links in particle order (as build_sphere_links
-// gives them) are split over OpenMP threads by whole particles, each summed in link order,
-// so the loads are the same for any number of threads.
-void add_momentum_exchange(const SphereLinks& links, MomentumExchange method,
-                           const lbm::FluidSolver& solver, HydrodynamicLoads& loads);
+// from the populations the moving-wall stage recorded per link (lbm::apply_links' output:
+// no lattice access). Torque arm: the cut point on the surface. Links in particle order (as
+// build_sphere_links gives them) are split over OpenMP threads by whole particles, each
+// summed in link order, so the loads are the same for any number of threads.
+void add_momentum_exchange(const SphereLinks& links,
+                           const std::vector<lbm::LinkPopulations>& populations,
+                           MomentumExchange method, double rho0, HydrodynamicLoads& loads);
 
 }  // namespace coupling

@@ -1,0 +1,66 @@
+#pragma once
+// The moving walls and the link mass correction (link_mass.h) in one sweep over the lattice
+// instead of two passes over the links. Each pass gathers 19 populations per fluid node from
+// 19 arrays; the nodes next to the spheres of a rank's block span a few MiB of them, more
+// than the L2 cache, so the second pass (the correction's 19 read-modify-writes per link)
+// fetched them again from L3. The sweep takes the links in the memory order of their fluid
+// node, in blocks of kBlockCells cells, and corrects block b - lag right after the moving
+// walls of block b: the populations it writes are still in L2, and no link still to come
+// reads them (lag covers twice the longest reach of a link, |c_q|'s cell-index step, once
+// for the reads of the scheme (x, x - c_q) and once for the writes of the correction
+// (x - c_p)).
+//
+// Bit-identical to apply_links; link_mass_defect; restore_link_mass: every cell the schemes
+// read is read before any correction writes it; the correction writes the slots of each node
+// in its links' order (the blocks keep link order within them, and a node's slots are pulled
+// by that node alone); the defect sum runs in link order.
+#include <cstdint>
+#include <vector>
+
+#include "lbm/block_layout.h"
+#include "lbm/link_boundary.h"
+#include "lbm/moving_wall/link_mass.h"
+
+namespace lbm {
+class FluidSolver;
+}
+
+namespace lbm::moving_wall {
+
+// The links grouped by block of kBlockCells cells of their fluid node (a counting sort,
+// stable: link order within a block), and the lag of the sweep. Reused between calls, so
+// allocated once.
+class LinkSweep {
+ public:
+  static constexpr int kBlockShift = 6;  // blocks of 64 cells
+
+  void sort(const std::vector<BoundaryLink>& links, const BlockLayout& layout);
+  std::size_t num_blocks() const { return begin_.empty() ? 0 : begin_.size() - 1; }
+  std::size_t lag() const { return lag_; }
+  const std::uint32_t* begin(std::size_t block) const { return ids_.data() + begin_[block]; }
+  const std::uint32_t* end(std::size_t block) const { return ids_.data() + begin_[block + 1]; }
+
+ private:
+  std::vector<std::uint32_t> begin_, next_, ids_;
+  std::size_t lag_ = 0;
+};
+
+// The loop of the sweep for one scheme (link_loop.h): fills `populations` (as apply_links)
+// and `per_link` (as link_mass_defect) and corrects the mass (as restore_link_mass).
+template <class Scheme>
+void sweep(const std::vector<BoundaryLink>& links, const LinkSweep& order, const Scheme& scheme,
+           const BlockLayout& layout, double rho0, const LinkMassRestorer& restorer,
+           PopulationField& f, std::vector<LinkPopulations>& populations,
+           std::vector<double>& per_link);
+
+// apply_links(links, scheme, solver, cache, nullptr, populations), then the link mass defect
+// (returned, and per link in `per_link`) and restore_link_mass, as one sweep on one thread;
+// with more OpenMP threads the three stages one after the other (the moving walls split
+// over the threads). The same result either way.
+LinkMassDefect apply_links_and_restore_mass(const std::vector<BoundaryLink>& links,
+                                            MovingWallScheme scheme, FluidSolver& solver,
+                                            MomentCache& cache, LinkSweep& order,
+                                            std::vector<LinkPopulations>& populations,
+                                            std::vector<double>& per_link);
+
+}  // namespace lbm::moving_wall
