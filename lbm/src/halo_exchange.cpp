@@ -187,4 +187,14 @@ void HaloExchange::exchange_scalar(std::vector<double>& values) {
   exchange_arrays(arrays, 1);
 }
 
+bool HaloExchange::borders_exchanged_ghost(std::size_t cell) const {
+  const auto c = layout_.coords(cell);
+  if (!layout_.is_owned(c[0], c[1], c[2])) return false;
+  for (int a = 0; a < 3; ++a)
+    if ((c[a] == 0 && decomposition_.neighbor[a][0] >= 0) ||
+        (c[a] == layout_.size(a) - 1 && decomposition_.neighbor[a][1] >= 0))
+      return true;
+  return false;
+}
+
 }  // namespace lbm

@@ -20,6 +20,10 @@ class HaloExchange {
   void exchange(PopulationField& field);
   // Same for one scalar value per cell (e.g. particle ids on the lattice); doubles.
   void exchange_scalar(std::vector<double>& values);
+  // Whether the owned cell `cell` has a D3Q19 neighbour in a ghost that exchange() fills
+  // (it lies on a face plane towards a neighbour rank or a periodic image); false for
+  // ghost cells and for faces at a non-periodic domain edge, whose ghosts exchange() leaves.
+  bool borders_exchanged_ghost(std::size_t cell) const;
 
  private:
   // One sweep along `axis` over `components` arrays of num_cells() values each.
