@@ -135,6 +135,10 @@ void FluidSolver::initialise_equilibrium(
 
 void FluidSolver::exchange_halo() { halo_->exchange(f_); }
 
+bool FluidSolver::borders_exchanged_ghost(std::size_t cell) const {
+  return halo_->borders_exchanged_ghost(cell);
+}
+
 // Half-way bounce-back (Ladd 1994): the population leaving fluid node x towards a wall
 // returns to x reversed one step later, f_q(x, t+1) = f*_{-q}(x, t).
 void FluidSolver::apply_wall_bounce_back() {

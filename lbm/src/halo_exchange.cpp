@@ -127,16 +127,23 @@ void HaloExchange::sweep(int axis, T* const* arrays, int components) {
     }
     return;
   }
+  // A non-periodic axis this rank owns entirely has nobody to talk to: both ghost planes
+  // stay as they are (boundary conditions own them), so there is nothing to pack or send.
+  // Only this rank takes that decision, and no other rank expects a message from it.
+  if (lo < 0 && hi < 0) return;
   const auto [b, c] = other_axes(axis);
   const std::size_t plane = std::size_t(layout_.padded(b)) * layout_.padded(c);
-  // Pack: the lowest owned plane goes down, the highest owned plane goes up.
+  // Pack: the lowest owned plane goes down, the highest owned plane goes up; a plane whose
+  // side has no neighbour goes to MPI_PROC_NULL, so it is not packed.
   for (int m = 0; m < components; ++m) {
     const T* f = arrays[m];
     double* low = send_low_.data() + m * plane;
     double* high = send_high_.data() + m * plane;
-    for_plane(layout_, axis, 0, [&](std::size_t i, std::size_t cell) { low[i] = double(f[cell]); });
-    for_plane(layout_, axis, n - 1,
-              [&](std::size_t i, std::size_t cell) { high[i] = double(f[cell]); });
+    if (lo >= 0)
+      for_plane(layout_, axis, 0, [&](std::size_t i, std::size_t cell) { low[i] = double(f[cell]); });
+    if (hi >= 0)
+      for_plane(layout_, axis, n - 1,
+                [&](std::size_t i, std::size_t cell) { high[i] = double(f[cell]); });
   }
   const int count = int(plane) * components;
   // Upward: our top plane to the rank above, the low ghost from the rank below; then down.
@@ -178,6 +185,16 @@ void HaloExchange::exchange_scalar(std::vector<double>& values) {
     throw InputError("halo exchange: scalar field does not match the block layout");
   double* arrays[1] = {values.data()};
   exchange_arrays(arrays, 1);
+}
+
+bool HaloExchange::borders_exchanged_ghost(std::size_t cell) const {
+  const auto c = layout_.coords(cell);
+  if (!layout_.is_owned(c[0], c[1], c[2])) return false;
+  for (int a = 0; a < 3; ++a)
+    if ((c[a] == 0 && decomposition_.neighbor[a][0] >= 0) ||
+        (c[a] == layout_.size(a) - 1 && decomposition_.neighbor[a][1] >= 0))
+      return true;
+  return false;
 }
 
 }  // namespace lbm

@@ -145,4 +145,20 @@ TEST(HandMadeBoxes, NeighboursThatDoNotShareAFaceAreRejected) {
   }
 }
 
+// Split along a non-periodic x: only the owned plane at the cut borders a ghost that the
+// exchange fills (rank 0's top plane, rank 1's bottom one); the outer faces do not.
+TEST(GridOnTwoRanks, BordersExchangedGhostOnlyAtTheCut) {
+  ASSERT_EQ(world().size(), 2);
+  const auto d = lbm::Decomposition::grid(make_box({0, 0, 0}, {8, 5, 4}), {false, false, false},
+                                          {2, 1, 1}, world());
+  const lbm::BlockLayout layout(d.owned);
+  const lbm::HaloExchange halo(d, layout);
+  const int cut_plane = world().rank() == 0 ? layout.size(0) - 1 : 0;
+  for (int k = 0; k < layout.size(2); ++k)
+    for (int j = 0; j < layout.size(1); ++j)
+      for (int i = 0; i < layout.size(0); ++i)
+        EXPECT_EQ(halo.borders_exchanged_ghost(layout.cell(i, j, k)), i == cut_plane)
+            << "rank " << world().rank() << " cell " << i << " " << j << " " << k;
+}
+
 }  // namespace

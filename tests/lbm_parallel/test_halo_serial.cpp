@@ -55,6 +55,28 @@ TEST_P(SerialHalo, HandBuiltDecompositionWithDefaultNeighbours) {
   EXPECT_EQ(mismatches(f, d, layout), 0);
 }
 
+// The refill's extra exchange is taken only for owned cells next to a ghost the exchange
+// fills: face planes of periodic axes here; never interior cells, ghosts, or faces of a
+// non-periodic edge (their ghosts are left alone).
+TEST_P(SerialHalo, BordersExchangedGhostOnlyOnFacesOfPeriodicAxes) {
+  const auto d = lbm::Decomposition::serial(global_box(), periodic());
+  const lbm::BlockLayout layout(d.owned);
+  const lbm::HaloExchange halo(d, layout);
+  const auto p = periodic();
+  for (int k = -1; k <= layout.size(2); ++k)
+    for (int j = -1; j <= layout.size(1); ++j)
+      for (int i = -1; i <= layout.size(0); ++i) {
+        const std::array<int, 3> c{i, j, k};
+        bool expect = layout.is_owned(i, j, k);
+        bool on_face = false;
+        for (int a = 0; a < 3; ++a)
+          on_face = on_face || (p[a] && (c[a] == 0 || c[a] == layout.size(a) - 1));
+        expect = expect && on_face;
+        EXPECT_EQ(halo.borders_exchanged_ghost(layout.cell(i, j, k)), expect)
+            << "cell " << i << " " << j << " " << k;
+      }
+}
+
 INSTANTIATE_TEST_SUITE_P(AllPeriodicCombinations, SerialHalo, ::testing::Range(0, 8));
 
 TEST(SerialHaloErrors, RejectsFieldsOfAnotherLayout) {

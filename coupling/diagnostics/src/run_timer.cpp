@@ -24,8 +24,8 @@ std::string RunTimer::report(double now, const StageTimes& t) const {
       total - s[kFluid] - s[kLubrication] - s[kDiagnostics], total / double(fluid_steps_));
   std::snprintf(text + n, sizeof text - n,
                 "fix lbm/pore: coupling stages since the lattice was built: mapping %.3f s, refill "
-                "%.3f s, moving walls %.3f s, force %.3f s, collide-stream %.3f s\n",
-                t.mapping, t.refill, t.moving_walls, t.force, t.collide_stream);
+                "%.3f s, halo %.3f s, moving walls %.3f s, force %.3f s, collide-stream %.3f s\n",
+                t.mapping, t.refill, t.halo, t.moving_walls, t.force, t.collide_stream);
   return text;
 }
 

@@ -59,6 +59,9 @@ class FluidSolver {
   // All stages in order.
   void step();
   void exchange_halo();
+  // Whether the owned cell `cell` reads a ghost that exchange_halo() fills when it looks at
+  // its D3Q19 neighbours (HaloExchange::borders_exchanged_ghost).
+  bool borders_exchanged_ghost(std::size_t cell) const;
   void apply_wall_bounce_back();
   void apply_open_boundaries();
   void collide_stream();

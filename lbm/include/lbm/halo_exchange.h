@@ -13,13 +13,21 @@ namespace lbm {
 // (boundary conditions own them). Buffers are allocated once. Along an axis this rank owns
 // entirely, the neighbours follow `periodic` (this rank, or none) whatever `neighbor` says;
 // the constructor checks with the face neighbours that their boxes touch and share the
-// extent of the other two axes (InputError otherwise). All 19 populations are sent.
+// extent of the other two axes (InputError otherwise). A side without a neighbour packs
+// and receives nothing, and an axis without one on either side (non-periodic, owned
+// entirely) is skipped. All 19 populations are sent: the pull stream needs only the five
+// crossing a face, but Mei-Luo-Shyy reads the moments of a second fluid node that can be a
+// ghost, and the refill reads ghost densities (README, "halo exchange").
 class HaloExchange {
  public:
   HaloExchange(const Decomposition& decomposition, const BlockLayout& layout);
   void exchange(PopulationField& field);
   // Same for one scalar value per cell (e.g. particle ids on the lattice); doubles.
   void exchange_scalar(std::vector<double>& values);
+  // Whether the owned cell `cell` has a D3Q19 neighbour in a ghost that exchange() fills
+  // (it lies on a face plane towards a neighbour rank or a periodic image); false for
+  // ghost cells and for faces at a non-periodic domain edge, whose ghosts exchange() leaves.
+  bool borders_exchanged_ghost(std::size_t cell) const;
 
  private:
   // One sweep along `axis` over `components` arrays of num_cells() values each.
