@@ -69,7 +69,10 @@ FixLbmPore::FixLbmPore(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg, arg) 
   extvector = 0;
   restart_global = 1;
   restart_peratom = 1;
-  nevery = 1;
+  // LIGGGHTS calls end_of_step only on steps that are multiples of nevery: the fluid step's
+  // own test (end_of_step) then holds on every call, and the 99 substeps in between cost
+  // no call at all (Modify::end_of_step's modulo instead of a virtual call each).
+  nevery = options_.n_dem;
   comm_forward = 6;  // velocity, angular velocity
   comm_reverse = lbm_pore::AtomCouplingState::kSummed;
   grow_arrays(atom->nmax);

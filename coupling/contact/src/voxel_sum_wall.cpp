@@ -172,20 +172,25 @@ void voxel_sum_wall_force(const WallContactParams& params, const VoxelSumInput& 
   const double spacing = geometry.spacing();
   const auto& origin = geometry.origin();
   const double reach = wall_contact_reach(params, in.radius);
-  // The centre in lattice coordinates, as distance_to_voxel computes it.
+  // The centre in lattice coordinates, as distance_to_voxel computes it: three divisions,
+  // computed only for a particle that has a wall to search (or a list to rebuild).
   double u[3];
-  for (int a = 0; a < 3; ++a) u[a] = (in.centre[a] - origin[a]) / spacing;
+  const auto find_lattice_coordinates = [&] {
+    for (int a = 0; a < 3; ++a) u[a] = (in.centre[a] - origin[a]) / spacing;
+  };
   // A particle whose candidate list (built with a skin) is empty has no wall in reach: the
   // particles in open fluid, most of them, cost one distance test.
   WallCandidates* const candidates = in.candidates;
   if (candidates != nullptr) {
     if (!candidates->covers(in.centre, reach)) {
+      find_lattice_coordinates();
       candidates->restart(in.centre, reach + kWallCandidateSkin * spacing);
       for_each_solid_voxel_near(geometry, in.blocks, u, candidates->reach,
                                 [&](int i, int j, int k) { candidates->voxels.push_back({i, j, k}); });
     }
     if (candidates->voxels.empty()) return;
   }
+  find_lattice_coordinates();
   const bool keep_springs = params.friction.mu > 0.0;
   // What the law needs of the particle alone, once for all its voxels.
   const WallParticleTerms terms = wall_particle_terms(params, in.radius, in.mass);
