@@ -139,6 +139,18 @@ bool FluidSolver::borders_exchanged_ghost(std::size_t cell) const {
   return halo_->borders_exchanged_ghost(cell);
 }
 
+// Every cell the sweeps send gets its density, summed as density() sums it; the scalar
+// sweeps then carry it along the paths exchange() moves the populations (bit-identical).
+void FluidSolver::exchange_ghost_densities(std::vector<double>& ghost_density) {
+  ghost_density.resize(layout_.num_cells());
+  for (std::size_t cell : halo_->sent_cells()) ghost_density[cell] = density(cell);
+  halo_->exchange_scalar(ghost_density);
+}
+
+bool FluidSolver::is_exchanged_ghost(std::size_t cell) const {
+  return halo_->is_exchanged_ghost(cell);
+}
+
 // Half-way bounce-back (Ladd 1994): the population leaving fluid node x towards a wall
 // returns to x reversed one step later, f_q(x, t+1) = f*_{-q}(x, t).
 void FluidSolver::apply_wall_bounce_back() {

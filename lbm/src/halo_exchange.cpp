@@ -66,6 +66,20 @@ HaloExchange::HaloExchange(const Decomposition& decomposition, const BlockLayout
   recv_low_.assign(capacity, 0.0);
   recv_high_.assign(capacity, 0.0);
   check_neighbours();
+  collect_sent_cells();
+}
+
+// The planes sweep() packs (or, for a periodic axis owned alone, copies from): plane 0 when
+// the lower side has a neighbour, plane n - 1 when the upper one has, the whole padded plane.
+void HaloExchange::collect_sent_cells() {
+  for (int a = 0; a < 3; ++a) {
+    const auto& nb = decomposition_.neighbor[a];
+    auto add = [&](std::size_t, std::size_t cell) { sent_cells_.push_back(cell); };
+    if (nb[0] >= 0) for_plane(layout_, a, 0, add);
+    if (nb[1] >= 0) for_plane(layout_, a, layout_.size(a) - 1, add);
+  }
+  std::sort(sent_cells_.begin(), sent_cells_.end());
+  sent_cells_.erase(std::unique(sent_cells_.begin(), sent_cells_.end()), sent_cells_.end());
 }
 
 // Face neighbours must share this rank's extent in the other two axes and touch it along
@@ -193,6 +207,16 @@ bool HaloExchange::borders_exchanged_ghost(std::size_t cell) const {
   for (int a = 0; a < 3; ++a)
     if ((c[a] == 0 && decomposition_.neighbor[a][0] >= 0) ||
         (c[a] == layout_.size(a) - 1 && decomposition_.neighbor[a][1] >= 0))
+      return true;
+  return false;
+}
+
+bool HaloExchange::is_exchanged_ghost(std::size_t cell) const {
+  const auto c = layout_.coords(cell);
+  if (layout_.is_owned(c[0], c[1], c[2])) return false;
+  for (int a = 0; a < 3; ++a)
+    if ((c[a] == -1 && decomposition_.neighbor[a][0] >= 0) ||
+        (c[a] == layout_.size(a) && decomposition_.neighbor[a][1] >= 0))
       return true;
   return false;
 }

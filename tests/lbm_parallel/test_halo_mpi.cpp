@@ -32,6 +32,7 @@ void check_exchange(const lbm::Decomposition& d) {
   lbm::PopulationField f(layout);
   fill(f, layout);
   lbm::HaloExchange halo(d, layout);
+  EXPECT_EQ(density_mismatches(halo, f, layout), 0) << "rank " << d.comm.rank();
   halo.exchange(f);
   EXPECT_EQ(mismatches(f, d, layout), 0) << "rank " << d.comm.rank();
   std::vector<double> s = scalar_field(layout);

@@ -7,7 +7,8 @@
 namespace coupling {
 
 MassChange refill_uncovered(const MappingChange& change, const SphereMapping& mapping,
-                            const ParticleView& view, RefillScheme scheme, lbm::FluidSolver& solver) {
+                            const ParticleView& view, RefillScheme scheme, lbm::FluidSolver& solver,
+                            const std::vector<double>* ghost_density) {
   using L = lbm::D3Q19;
   MassChange mass;
   const auto& layout = solver.layout();
@@ -31,7 +32,9 @@ MassChange refill_uncovered(const MappingChange& change, const SphereMapping& ma
       for (int q = 1; q < L::Q; ++q) {
         const std::size_t y = cell + layout.offset(L::c[q][0], L::c[q][1], L::c[q][2]);
         if (type[y] != lbm::kFluid) continue;
-        sum += solver.density(y);
+        // Owned neighbours as they stand (one refilled earlier in this loop included).
+        sum += ghost_density && solver.is_exchanged_ghost(y) ? (*ghost_density)[y]
+                                                             : solver.density(y);
         ++count;
       }
       if (count > 0) rho = sum / count;

@@ -40,19 +40,21 @@ void SphereCoupling::map_and_refill(const ParticleView& view) {
   {
     StageTimer t(times_.refill);
     // The refill averages the density of the node's fluid neighbours; next to a rank (or
-    // periodic) boundary some are halo nodes, which still hold the values of the last
-    // exchange (before the previous collide-stream). Bring them up to date first, so that
-    // the refill, and the run, equal the serial one to round-off. Only an owned node on a
-    // face plane towards a neighbour rank or periodic image reads such a ghost (its 18
-    // neighbours x + c_q, refill.cpp), and only the averaged-density scheme reads any: the
-    // others need no exchange (nothing else reads ghosts before the step's own exchange).
-    // The exchange is collective: every rank takes it when any rank needs it.
+    // periodic) boundary some are halo nodes, whose populations still hold the values of
+    // the last exchange (before the previous collide-stream). Their current densities come
+    // first, one value per ghost (not 19 populations), so that the refill, and the run,
+    // equal the serial one to round-off. Only an owned node on a face plane towards a
+    // neighbour rank or periodic image reads such a ghost (its 18 neighbours x + c_q,
+    // refill.cpp), and only the averaged-density scheme reads any. The exchange is
+    // collective: every rank takes it when any rank needs it. Nothing else reads ghost
+    // populations before the step's own exchange, so they may stay stale.
     long long uncovered = 0;
     if (options_.refill == RefillScheme::kEquilibriumAveragedDensity)
       for (std::size_t cell : change.uncovered) uncovered += solver_.borders_exchanged_ghost(cell);
     solver_.decomposition().comm.sum(&uncovered, 1);
-    if (uncovered > 0) solver_.exchange_halo();
-    mass_ = refill_uncovered(change, mapping_, view, options_.refill, solver_);
+    if (uncovered > 0) solver_.exchange_ghost_densities(ghost_density_);
+    mass_ = refill_uncovered(change, mapping_, view, options_.refill, solver_,
+                             uncovered > 0 ? &ghost_density_ : nullptr);
   }
   mapping_.commit(change, solver_.node_types());
 }

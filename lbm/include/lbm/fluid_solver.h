@@ -62,6 +62,13 @@ class FluidSolver {
   // Whether the owned cell `cell` reads a ghost that exchange_halo() fills when it looks at
   // its D3Q19 neighbours (HaloExchange::borders_exchanged_ghost).
   bool borders_exchanged_ghost(std::size_t cell) const;
+  // The densities (density(), below) that exchange_halo() would give the ghosts it fills,
+  // written into `ghost_density` (num_cells() values, sized on first use) at those ghosts,
+  // while one value per cell travels instead of 19 populations; the populations stay as
+  // they are. Other cells of `ghost_density` hold nothing of use. Collective.
+  void exchange_ghost_densities(std::vector<double>& ghost_density);
+  // Whether `cell` is a ghost that exchange_halo() fills (HaloExchange::is_exchanged_ghost).
+  bool is_exchanged_ghost(std::size_t cell) const;
   void apply_wall_bounce_back();
   void apply_open_boundaries();
   void collide_stream();

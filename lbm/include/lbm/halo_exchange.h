@@ -17,7 +17,8 @@ namespace lbm {
 // and receives nothing, and an axis without one on either side (non-periodic, owned
 // entirely) is skipped. All 19 populations are sent: the pull stream needs only the five
 // crossing a face, but Mei-Luo-Shyy reads the moments of a second fluid node that can be a
-// ghost, and the refill reads ghost densities (README, "halo exchange").
+// ghost (README, "halo exchange"). The refill, which reads only ghost densities, gets them
+// with one value per cell (sent_cells(), exchange_scalar()).
 class HaloExchange {
  public:
   HaloExchange(const Decomposition& decomposition, const BlockLayout& layout);
@@ -28,6 +29,16 @@ class HaloExchange {
   // (it lies on a face plane towards a neighbour rank or a periodic image); false for
   // ghost cells and for faces at a non-periodic domain edge, whose ghosts exchange() leaves.
   bool borders_exchanged_ghost(std::size_t cell) const;
+  // Whether `cell` is a ghost that exchange() fills: on a ghost plane towards a neighbour
+  // rank or periodic image (edges and corners included); false for owned cells.
+  bool is_exchanged_ghost(std::size_t cell) const;
+  // The cells an exchange sends, every sweep counted: the padded planes 0 and n - 1 of each
+  // axis that have a neighbour on that side (each cell once, in increasing order). The
+  // sweeps move values along the same paths whatever they carry, so a scalar field that
+  // holds g(populations) on these cells holds, after exchange_scalar(), at every exchanged
+  // ghost the g of the populations exchange() would have put there: the refill sends one
+  // density per cell instead of 19 populations (FluidSolver::exchange_ghost_densities).
+  const std::vector<std::size_t>& sent_cells() const { return sent_cells_; }
 
  private:
   // One sweep along `axis` over `components` arrays of num_cells() values each.
@@ -36,10 +47,12 @@ class HaloExchange {
   template <class T>
   void exchange_arrays(T* const* arrays, int components);
   void check_neighbours() const;
+  void collect_sent_cells();
 
   Decomposition decomposition_;  // a copy: callers may pass a temporary
   BlockLayout layout_;
   std::vector<double> send_low_, send_high_, recv_low_, recv_high_;
+  std::vector<std::size_t> sent_cells_;
 };
 
 }  // namespace lbm

@@ -86,6 +86,9 @@ class SphereCoupling {
   double surface_mass_ = 0.0;
   std::vector<lbm::LinkPopulations> link_populations_;  // per link, from the moving walls
   std::vector<double> defect_per_link_;  // reused every step
+  // The refill's ghost densities, one per lattice cell (8 B per node), allocated on the
+  // first step whose refill reads a ghost (FluidSolver::exchange_ghost_densities).
+  std::vector<double> ghost_density_;
   StageTimes times_;
 };
 

@@ -31,8 +31,11 @@ struct MassChange {
 
 // Writes the refill into the owned uncovered nodes (ghosts get theirs from the halo
 // exchange) and accounts the covered ones; call before SphereMapping::commit so the
-// neighbours' old types are still in place.
+// neighbours' old types are still in place. `ghost_density`: the densities of the ghosts
+// the halo exchange fills (FluidSolver::exchange_ghost_densities), read there instead of
+// the ghosts' stale populations; nullptr when no refilled node has such a neighbour.
 MassChange refill_uncovered(const MappingChange& change, const SphereMapping& mapping,
-                            const ParticleView& view, RefillScheme scheme, lbm::FluidSolver& solver);
+                            const ParticleView& view, RefillScheme scheme, lbm::FluidSolver& solver,
+                            const std::vector<double>* ghost_density);
 
 }  // namespace coupling
