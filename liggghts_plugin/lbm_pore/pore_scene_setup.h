@@ -75,8 +75,9 @@ void check_neighbor_skin(const PoreOptions& options, double skin);
 // The lines printed at setup: lattice, time steps, tau, drive and its Mach number or
 // density difference, the moving-wall scheme and lubrication, and the memory per lattice
 // node (the fluid's, lbm::FluidSolver::bytes_per_node, plus the coupling's per-node arrays:
-// sphere mapping 8 and moving-wall moment cache 36 bytes; 0: not printed).
-constexpr double kCouplingBytesPerNode = 44.0;
+// sphere mapping 8, moving-wall moment cache 36 and the refill's ghost densities 8 bytes, the
+// last allocated only where a rank or periodic neighbour exists; 0: not printed).
+constexpr double kCouplingBytesPerNode = 52.0;
 std::string setup_summary(const PoreOptions& options, const coupling::UnitConversion& units,
                           const std::array<int, 3>& dims, const lbm::FlowDrive& drive, double dt_dem,
                           double pore_diameter, double bytes_per_node);
