@@ -48,13 +48,8 @@ TEST(ParticleProbes, FastestCountsNaNAsInfiniteAndNearestSurfaceWrapsPeriodicall
 }
 
 TEST(PoreMonitor, DepositsAndCrossingsInHostUnits) {
-  lbm::PoreSceneSpec spec;
-  spec.inlet_length = 4;
-  spec.free_length = 4;
-  spec.pore_length = 6;
-  spec.outlet_length = 4;
-  spec.width = 12;
-  spec.pore_diameter = 8.0;
+  // inlet, free, pore, outlet lengths, width, pore diameter (cells)
+  lbm::PoreSceneSpec spec{4, 4, 6, 4, 12, 8.0};
   PoreMonitorSetup setup = pore_scene_monitor(spec);
   EXPECT_DOUBLE_EQ(setup.inlet_plane, 3.5);
   EXPECT_DOUBLE_EQ(setup.outlet_plane, 13.5);

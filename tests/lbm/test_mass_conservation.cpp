@@ -40,13 +40,8 @@ TEST(MassConservation, ClosedBoxWithObstaclesAndForcing) {
 
 // A run stopped, checkpointed and resumed continues exactly as an uninterrupted one.
 TEST(Checkpoint, ResumedRunMatchesUninterruptedRun) {
-  lbm::PoreSceneSpec spec;
-  spec.inlet_length = 4;
-  spec.free_length = 2;
-  spec.pore_length = 4;
-  spec.outlet_length = 4;
-  spec.width = 8;
-  spec.pore_diameter = 5;
+  // inlet, free, pore, outlet lengths, width, pore diameter (cells)
+  lbm::PoreSceneSpec spec{4, 2, 4, 4, 8, 5};
   const auto g = lbm::make_pore_scene(spec);
   lbm::FluidParameters p;
   p.periodic = {false, true, true};

@@ -9,13 +9,8 @@
 #include "lbm/pore_scene.h"
 
 TEST(OpenBoundary, FluxIsConservedThroughThePoreConstriction) {
-  lbm::PoreSceneSpec spec;
-  spec.inlet_length = 6;
-  spec.free_length = 6;
-  spec.pore_length = 8;
-  spec.outlet_length = 8;
-  spec.width = 16;
-  spec.pore_diameter = 10;
+  // inlet, free, pore, outlet lengths, width, pore diameter (cells)
+  lbm::PoreSceneSpec spec{6, 6, 8, 8, 16, 10};
   const auto g = lbm::make_pore_scene(spec);
   lbm::FluidParameters p;
   p.tau = 1.0;
@@ -110,13 +105,8 @@ TEST(Stability, NanAndRunawayNodesAreReportedWithTheirPlace) {
 // up and the density field changes (where rho u sampled at the end layers is off by about
 // half of their mass change), for both drives.
 TEST(OpenBoundary, FaceMassesAccountForTheMassChangeExactly) {
-  lbm::PoreSceneSpec spec;
-  spec.inlet_length = 6;
-  spec.free_length = 2;
-  spec.pore_length = 8;
-  spec.outlet_length = 6;
-  spec.width = 12;
-  spec.pore_diameter = 7;
+  // inlet, free, pore, outlet lengths, width, pore diameter (cells)
+  lbm::PoreSceneSpec spec{6, 2, 8, 6, 12, 7};
   const auto g = lbm::make_pore_scene(spec);
   lbm::FluidParameters p;
   p.tau = 0.8;

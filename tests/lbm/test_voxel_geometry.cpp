@@ -24,13 +24,8 @@ std::string error_of(const std::string& path) {
 }  // namespace
 
 TEST(PoreScene, RegionsAndPoreCrossSection) {
-  lbm::PoreSceneSpec spec;
-  spec.inlet_length = 5;
-  spec.free_length = 7;
-  spec.pore_length = 11;
-  spec.outlet_length = 3;
-  spec.width = 41;
-  spec.pore_diameter = 30.0;
+  // inlet, free, pore, outlet lengths, width, pore diameter (cells)
+  lbm::PoreSceneSpec spec{5, 7, 11, 3, 41, 30.0};
   const lbm::VoxelGeometry g = lbm::make_pore_scene(spec);
   EXPECT_EQ(g.dims()[0], 26);
   const auto r = lbm::regions_of(spec);
