@@ -7,6 +7,9 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cstdlib>
+#include <fstream>
+#include <string>
 
 #include "lbm/d3q19.h"
 #include "lbm/node_type.h"
@@ -42,7 +45,7 @@ using L = D3Q19;
 // cache line at each row end and population, and the padding costs 2 computed cells a row.
 //
 // A run is processed in chunks of kChunk nodes: the populations are pulled straight from
-// the source array, collided, and the results gathered in a small L1-resident SoA buffer
+// the source array, collided, and the results gathered in a small L1/L2-resident SoA buffer
 // (19 contiguous streams) that is written out, with streaming stores where the arrays are
 // larger than the cache (no write-allocate: 2 x 19 values moved per update, not 3 x 19),
 // with plain ones where the cache holds them. Splitting the arithmetic from the stores
@@ -50,9 +53,16 @@ using L = D3Q19;
 // double mask, since GCC does not vectorise a loop that mixes byte and double lanes.
 // With streaming stores, the tail of a chunk's output that does not fill a cache line is
 // held back and stored with the next chunk's head (streaming_store_keep_tail), so inside
-// a run every line of every population is one vector store. 128 nodes: 64 was 10 % and 256
-// (a 39 KB buffer, most of L1) 7 % slower, measured on rows of 128.
-constexpr int kChunk = 128;
+// a run every line of every population is one vector store.
+// The chunk length depends on where the output goes. Streamed to memory, longer bursts per
+// population pay: the memory serves 38 streams (19 pulled, 19 written) far below its
+// one-stream copy bandwidth, and less so the longer each write burst (session 7, 2-core
+// AMD EPYC KVM guest, 32 MiB L3: 128^3 on one thread 56 -> 86-90 MLUPS from 128 to 320
+// nodes, the paper's rank block of 90 x 20 x 40 on two concurrent processes 50 -> 64-69;
+// 512 and more fall back). Into the cache, the short buffer that stays in L1 is faster
+// (32^3 on one thread: 117 MLUPS at 128, 107 at 320). README "Measured figures".
+constexpr int kChunkStreaming = 320;
+constexpr int kChunkPlain = 128;
 // Room for the held-back tail before a chunk's values: less than a line.
 constexpr int kHeldBack = int(detail::kCacheLine / sizeof(Real));
 // Streaming stores pay where the arrays do not stay in the cache between steps (128^3:
@@ -88,11 +98,12 @@ void fill_fluid_mask(const std::uint8_t* __restrict type, const Run& run, int st
 
 // kIncompressible: He & Luo's equilibrium, the momentum rho0 u and rho only in the zeroth
 // order (a compile-time choice, so the standard kernel's arithmetic is untouched).
-template <bool kForce, bool kIncompressible>
+template <int kChunk, bool kForce, bool kIncompressible>
 void collide_stream_run(const Real* __restrict src, Real* __restrict dst,
                         const std::uint8_t* __restrict type, std::size_t n, const Run& run,
-                        const std::ptrdiff_t* off, bool streaming, double omega_plus,
+                        const std::ptrdiff_t* off, double omega_plus,
                         double omega_minus, double fx, double fy, double fz, double rho0) {
+  constexpr bool streaming = kChunk == kChunkStreaming;
   const double source_even = 1.0 - 0.5 * omega_plus;
   const double source_odd = 1.0 - 0.5 * omega_minus;
   alignas(64) double f[L::Q][kHeldBack + kChunk];
@@ -168,7 +179,7 @@ void collide_stream_run(const Real* __restrict src, Real* __restrict dst,
     for (int q = 0; q < L::Q; ++q) {
       Real* to = dst + q * n + first - held[q];
       const int count = held[q] + m;
-      if (!streaming) {
+      if constexpr (!streaming) {
         for (int i = 0; i < count; ++i) to[i] = static_cast<Real>(f[q][i]);
         continue;
       }
@@ -179,19 +190,47 @@ void collide_stream_run(const Real* __restrict src, Real* __restrict dst,
   }
 }
 
+// The size of the last-level cache the calling core sees, in bytes; 0 when unknown.
+// Linux's sysfs describes the cache the core shares (lscpu reads it); sysconf may report
+// the whole package instead: on a 2-core AMD EPYC KVM guest it gave 384 MiB where the
+// core's L3 holds 32 MiB, and the paper's rank blocks (2 x 26 MB) got plain stores that
+// spilled to memory (collide-stream 2.0 ms per fluid step, 1.2 ms streamed).
+long last_level_cache_bytes() {
+  long size = 0;
+  for (int index = 0; index < 8; ++index) {
+    const std::string dir = "/sys/devices/system/cpu/cpu0/cache/index" + std::to_string(index);
+    std::ifstream level_file(dir + "/level"), type_file(dir + "/type"), size_file(dir + "/size");
+    int level = 0;
+    std::string type, text;
+    if (!(level_file >> level) || !(type_file >> type) || !(size_file >> text)) break;
+    if (type == "Instruction" || text.empty()) continue;
+    const long unit = text.back() == 'K' ? 1024L : text.back() == 'M' ? 1024L * 1024 : 1;
+    size = std::max(size, std::atol(text.c_str()) * unit);  // the largest level wins
+  }
+#ifdef _SC_LEVEL3_CACHE_SIZE
+  if (size <= 0) size = sysconf(_SC_LEVEL3_CACHE_SIZE);
+  if (size <= 0) size = sysconf(_SC_LEVEL2_CACHE_SIZE);
+#endif
+  return size;
+}
+
 // Whether a block's two population arrays are larger than kPlainStoresUpToCacheShare of
 // the last-level cache (streaming stores pay); where the cache size is unknown, they are.
 bool arrays_exceed_cache(std::size_t cells) {
-  static const long cache = [] {  // asked once: it may run cpuid, slow in a VM
-    long size = 0;
-#ifdef _SC_LEVEL3_CACHE_SIZE
-    size = sysconf(_SC_LEVEL3_CACHE_SIZE);
-    if (size <= 0) size = sysconf(_SC_LEVEL2_CACHE_SIZE);
-#endif
-    return size;
-  }();
+  static const long cache = last_level_cache_bytes();  // asked once: files, or cpuid in a VM
   const double bytes = 2.0 * L::Q * double(cells) * sizeof(Real);
   return cache <= 0 || bytes > kPlainStoresUpToCacheShare * double(cache);
+}
+
+using RunKernel = void (*)(const Real*, Real*, const std::uint8_t*, std::size_t, const Run&,
+                          const std::ptrdiff_t*, double, double, double, double, double, double);
+
+template <int kChunk>
+RunKernel run_kernel(bool incompressible, bool forced) {
+  return incompressible ? (forced ? collide_stream_run<kChunk, true, true>
+                                  : collide_stream_run<kChunk, false, true>)
+                        : (forced ? collide_stream_run<kChunk, true, false>
+                                  : collide_stream_run<kChunk, false, false>);
 }
 
 }  // namespace
@@ -203,16 +242,14 @@ void collide_stream(const CollideStreamArgs& a) {
   for (int q = 0; q < L::Q; ++q) off[q] = g.offset(L::c[q][0], L::c[q][1], L::c[q][2]);
   const std::size_t n = g.num_cells();
   const bool forced = a.force[0] != 0.0 || a.force[1] != 0.0 || a.force[2] != 0.0;
-  // The run kernel of the options, chosen once (no option is looked up per cell).
-  const auto run = a.incompressible ? (forced ? collide_stream_run<true, true>
-                                              : collide_stream_run<false, true>)
-                                    : (forced ? collide_stream_run<true, false>
-                                              : collide_stream_run<false, false>);
-  const int nx = g.size(0), ny = g.size(1), nz = g.size(2);
-  if (nx <= 0 || ny <= 0 || nz <= 0) return;
   using Stores = CollideStreamArgs::Stores;
   const bool streaming = a.stores == Stores::kStreaming ||
                          (a.stores == Stores::kByCacheSize && arrays_exceed_cache(n));
+  // The run kernel of the options, chosen once (no option is looked up per cell).
+  const auto run = streaming ? run_kernel<kChunkStreaming>(a.incompressible, forced)
+                             : run_kernel<kChunkPlain>(a.incompressible, forced);
+  const int nx = g.size(0), ny = g.size(1), nz = g.size(2);
+  if (nx <= 0 || ny <= 0 || nz <= 0) return;
   // Each plane is one run, or a few where there are fewer planes than threads; the runs
   // do not overlap, so no two threads write the same value.
 #ifdef _OPENMP
@@ -229,7 +266,7 @@ void collide_stream(const CollideStreamArgs& a) {
         const int j0 = part * ny / parts, j1 = (part + 1) * ny / parts;
         if (j0 == j1) continue;
         const Run r{g.cell(0, j0, k), (j1 - j0 - 1) * g.padded(0) + nx, g.padded(0), nx};
-        run(a.src, a.dst, a.node_type, n, r, off, streaming, a.omega_plus, a.omega_minus,
+        run(a.src, a.dst, a.node_type, n, r, off, a.omega_plus, a.omega_minus,
             a.force[0], a.force[1], a.force[2], a.rho0);
       }
     // Before the region's closing barrier: every thread's runs are in memory after it.
