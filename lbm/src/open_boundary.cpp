@@ -2,25 +2,16 @@
 
 #include "lbm/d3q19.h"
 #include "lbm/node_type.h"
+#include "plane_nodes.h"
 
 namespace lbm {
 
 namespace {
-// Calls visit(cell) for every fluid node of the block on the face's plane.
-template <typename Visit>
+// Every fluid node of the face's plane (plane_nodes.h).
+template <typename Visit, typename Ahead>
 void for_face_nodes(const OpenFace& face, const BlockLayout& layout,
-                    const std::vector<std::uint8_t>& node_type, Visit visit) {
-  const int a = face.axis;
-  const int t1 = (a + 1) % 3, t2 = (a + 2) % 3;  // tangential axes
-  for (int s2 = 0; s2 < layout.size(t2); ++s2)
-    for (int s1 = 0; s1 < layout.size(t1); ++s1) {
-      int ijk[3];
-      ijk[a] = face.local_plane;
-      ijk[t1] = s1;
-      ijk[t2] = s2;
-      const std::size_t cell = layout.cell(ijk[0], ijk[1], ijk[2]);
-      if (node_type[cell] == kFluid) visit(cell);
-    }
+                    const std::vector<std::uint8_t>& node_type, Visit visit, Ahead ahead) {
+  detail::for_plane_fluid_nodes(layout, node_type, face.axis, face.local_plane, visit, ahead);
 }
 }  // namespace
 
@@ -32,6 +23,9 @@ void apply_open_face(const OpenFace& face, const BlockLayout& layout,
   std::ptrdiff_t off[L::Q];
   for (int q = 0; q < L::Q; ++q) off[q] = layout.offset(L::c[q][0], L::c[q][1], L::c[q][2]);
 
+  // The lines of the node a few places ahead are asked for while this one is computed: on
+  // an x-normal face each is a line of its own, just streamed to memory by the kernel.
+  const auto prefetch = [&](std::size_t ahead) { detail::prefetch_pulled(f, ahead, off); };
   for_face_nodes(face, layout, node_type, [&](std::size_t cell) {
     // Populations after streaming: f_q(x) = f*_q(x - c_q).
     double post[L::Q];
@@ -81,7 +75,7 @@ void apply_open_face(const OpenFace& face, const BlockLayout& layout,
           post[qo] + 6.0 * L::w[q] * m * cu - (L::c[q][t1] * n1 + L::c[q][t2] * n2);
       f.at(q, cell - off[q]) = static_cast<Real>(value);
     }
-  });
+  }, prefetch);
 }
 
 double open_face_mass(const OpenFace& face, const BlockLayout& layout,
@@ -98,7 +92,7 @@ double open_face_mass(const OpenFace& face, const BlockLayout& layout,
       else if (L::c[q][a] * face.inward < 0 && node_type[cell + off[q]] == kOpen)
         mass -= f.at(q, cell);  // sent beyond the face: lost
     }
-  });
+  }, [](std::size_t) {});  // the lines apply_open_face has just read
   return mass;
 }
 

@@ -1,0 +1,52 @@
+#pragma once
+// The fluid nodes of one lattice plane, visited in a fixed order, with a hook that runs a
+// few nodes ahead. The open faces and the plane diagnostics (pressure, flux) read every
+// node of an x-normal plane right after the stream-collide kernel has streamed the
+// populations to memory; on such a plane each population of each node is a cache line of
+// its own, 19 lines a node, and the hook asks for the lines of the node kAhead places
+// further along the row while this one is computed (prefetch_node, prefetch_pulled).
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "lbm/block_layout.h"
+#include "lbm/d3q19.h"
+#include "lbm/node_type.h"
+#include "lbm/population_field.h"
+
+namespace lbm::detail {
+
+constexpr int kPlaneAhead = 4;
+
+// visit(cell) for every fluid node of local plane `plane` normal to `axis`, the other two
+// axes over the owned extent, the second tangential axis outermost (sums over a plane add
+// in this order); ahead(cell) first for the node kPlaneAhead places further along the row.
+template <typename Visit, typename Ahead>
+void for_plane_fluid_nodes(const BlockLayout& layout, const std::vector<std::uint8_t>& node_type,
+                           int axis, int plane, Visit visit, Ahead ahead) {
+  const int t1 = (axis + 1) % 3, t2 = (axis + 2) % 3;  // tangential axes
+  int ijk[3] = {0, 0, 0};
+  ijk[axis] = plane;
+  const std::size_t origin = layout.cell(ijk[0], ijk[1], ijk[2]);
+  const std::ptrdiff_t step1 = layout.offset(t1 == 0, t1 == 1, t1 == 2);
+  const std::ptrdiff_t step2 = layout.offset(t2 == 0, t2 == 1, t2 == 2);
+  const int n1 = layout.size(t1), n2 = layout.size(t2);
+  for (int s2 = 0; s2 < n2; ++s2)
+    for (int s1 = 0; s1 < n1; ++s1) {
+      const std::size_t cell = origin + s2 * step2 + s1 * step1;
+      if (s1 + kPlaneAhead < n1) ahead(cell + kPlaneAhead * step1);
+      if (node_type[cell] == kFluid) visit(cell);
+    }
+}
+
+// The 19 populations of `cell`.
+inline void prefetch_node(const PopulationField& f, std::size_t cell) {
+  for (int q = 0; q < D3Q19::Q; ++q) __builtin_prefetch(f.q(q) + cell);
+}
+
+// The 19 populations `cell` pulls, f_q(cell - c_q), for writing (the open faces write five).
+inline void prefetch_pulled(const PopulationField& f, std::size_t cell, const std::ptrdiff_t* off) {
+  for (int q = 0; q < D3Q19::Q; ++q) __builtin_prefetch(f.q(q) + cell - off[q], 1);
+}
+
+}  // namespace lbm::detail
