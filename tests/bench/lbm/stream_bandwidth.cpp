@@ -43,3 +43,32 @@ double measure_copy_bandwidth(int threads, CopyStores stores, std::size_t bytes_
   }
   return best;
 }
+
+double measure_multi_array_copy_bandwidth(int threads, int arrays, std::size_t values_per_array,
+                                          std::size_t burst) {
+  const std::size_t n = values_per_array;
+  std::vector<double, lbm::HugePageAllocator<double>> a(n * arrays), b(n * arrays);
+#pragma omp parallel for num_threads(threads) schedule(static)
+  for (std::size_t i = 0; i < n * arrays; ++i) {
+    a[i] = 1.0;
+    b[i] = 0.0;
+  }
+  double best = 0.0;
+  for (int repeat = 0; repeat < 5; ++repeat) {
+    const auto start = std::chrono::steady_clock::now();
+#pragma omp parallel num_threads(threads)
+    {
+#pragma omp for schedule(static)
+      for (std::size_t i = 0; i < n; i += burst)
+        for (int k = 0; k < arrays; ++k)
+          lbm::detail::streaming_store(b.data() + k * n + i, a.data() + k * n + i,
+                                       int(std::min(burst, n - i)));
+      lbm::detail::streaming_store_fence();
+    }
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    best = std::max(best, 2.0 * n * arrays * sizeof(double) / seconds);
+    std::swap(a, b);
+  }
+  return best;
+}

@@ -9,3 +9,11 @@
 enum class CopyStores { kPlain, kStreaming };
 double measure_copy_bandwidth(int threads, CopyStores stores,
                               std::size_t bytes_per_array = std::size_t(1) << 28);
+
+// The same copy over `arrays` source arrays into as many destination arrays of
+// `values_per_array` doubles each, with streaming stores, array after array in bursts of
+// `burst` values (the most favourable order for the memory: one stream at a time, long
+// runs): what a kernel that reads 19 population arrays and writes 19 can move at most on
+// this machine, whatever it computes. Bytes counted as above (one read, one write).
+double measure_multi_array_copy_bandwidth(int threads, int arrays, std::size_t values_per_array,
+                                          std::size_t burst);
