@@ -36,8 +36,11 @@ namespace lbm {
 // collide-stream (pulls f_q(x - c_q), crossing, for every owned node). Collide-stream also
 // computes the x-padding ghosts inside a run, from any population of the ghosts around
 // them, and stores fluid-mask 0 times the result there: a zero whose sign alone can depend
-// on a stale ghost value; those cells are ghosts the next exchange rewrites or that only
-// the crossing reads above see. Between steps nothing reads ghost populations: the
+// on a stale ghost value. Such a zero can only travel on as a zero (an owned non-fluid node
+// that pulls it stores mask 0 times its result too); nothing reads a non-fluid node's
+// populations (the schemes and the refill test the type first; a refill or an uncovering
+// overwrites them) except the checkpoint, which may then differ in the sign bit of a zero
+// of a solid node. Between steps nothing reads ghost populations: the
 // diagnostics, VTK output (it exchanges its macroscopic fields), checkpoints, the stability
 // guard and plane fluxes read owned nodes; the mapping, link building and lubrication read
 // node types and particles; the refill reads owned densities, the exchanged ghost
