@@ -135,6 +135,12 @@ void FluidSolver::initialise_equilibrium(
 
 void FluidSolver::exchange_halo() { halo_->exchange(f_); }
 
+void FluidSolver::exchange_halo(const HaloPopulations& which) { halo_->exchange(f_, which); }
+
+bool FluidSolver::exchanges_face(int axis, int side) const {
+  return halo_->exchanges_face(axis, side);
+}
+
 bool FluidSolver::borders_exchanged_ghost(std::size_t cell) const {
   return halo_->borders_exchanged_ghost(cell);
 }
@@ -221,7 +227,8 @@ void FluidSolver::collide_stream() {
 }
 
 void FluidSolver::step() {
-  exchange_halo();
+  // Static walls and open faces read only the crossing populations of a ghost.
+  exchange_halo(HaloPopulations::crossing());
   apply_wall_bounce_back();
   apply_open_boundaries();
   collide_stream();

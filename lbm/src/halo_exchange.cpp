@@ -59,7 +59,7 @@ HaloExchange::HaloExchange(const Decomposition& decomposition, const BlockLayout
     const auto [b, c] = other_axes(a);
     largest_plane = std::max(largest_plane, std::size_t(layout_.padded(b)) * layout_.padded(c));
   }
-  // Sized for 19 populations; exchange_scalar uses a slice of them.
+  // Sized for 19 populations; the crossing five and exchange_scalar use a slice of them.
   const std::size_t capacity = largest_plane * D3Q19::Q;
   send_low_.assign(capacity, 0.0);
   send_high_.assign(capacity, 0.0);
@@ -67,6 +67,7 @@ HaloExchange::HaloExchange(const Decomposition& decomposition, const BlockLayout
   recv_high_.assign(capacity, 0.0);
   check_neighbours();
   collect_sent_cells();
+  collect_crossing();
 }
 
 // The planes sweep() packs (or, for a periodic axis owned alone, copies from): plane 0 when
@@ -121,8 +122,11 @@ void HaloExchange::check_neighbours() const {
   }
 }
 
+// `up` are the arrays whose values travel upward along `axis` (the highest owned plane to
+// the low ghost plane of the block above), `down` those travelling downward; for the
+// populations they are the five crossing each face into the receiving block, or all 19.
 template <class T>
-void HaloExchange::sweep(int axis, T* const* arrays, int components) {
+void HaloExchange::sweep(int axis, T* const* up, int num_up, T* const* down, int num_down) {
   const Decomposition& d = decomposition_;
   const int n = layout_.size(axis);
   const int self = d.comm.rank();
@@ -132,10 +136,13 @@ void HaloExchange::sweep(int axis, T* const* arrays, int components) {
     // Distance between a ghost plane and the owned plane it copies.
     const std::ptrdiff_t shift =
         std::ptrdiff_t(n) * layout_.offset(axis == 0, axis == 1, axis == 2);
-    for (int m = 0; m < components; ++m) {
-      T* f = arrays[m];
+    for (int m = 0; m < num_up; ++m) {
+      T* f = up[m];
       for_plane(layout_, axis, -1,
                 [&](std::size_t, std::size_t ghost) { f[ghost] = f[ghost + shift]; });
+    }
+    for (int m = 0; m < num_down; ++m) {
+      T* f = down[m];
       for_plane(layout_, axis, n,
                 [&](std::size_t, std::size_t ghost) { f[ghost] = f[ghost - shift]; });
     }
@@ -149,56 +156,94 @@ void HaloExchange::sweep(int axis, T* const* arrays, int components) {
   const std::size_t plane = std::size_t(layout_.padded(b)) * layout_.padded(c);
   // Pack: the lowest owned plane goes down, the highest owned plane goes up; a plane whose
   // side has no neighbour goes to MPI_PROC_NULL, so it is not packed.
-  for (int m = 0; m < components; ++m) {
-    const T* f = arrays[m];
-    double* low = send_low_.data() + m * plane;
-    double* high = send_high_.data() + m * plane;
-    if (lo >= 0)
+  if (lo >= 0)
+    for (int m = 0; m < num_down; ++m) {
+      const T* f = down[m];
+      double* low = send_low_.data() + m * plane;
       for_plane(layout_, axis, 0, [&](std::size_t i, std::size_t cell) { low[i] = double(f[cell]); });
-    if (hi >= 0)
+    }
+  if (hi >= 0)
+    for (int m = 0; m < num_up; ++m) {
+      const T* f = up[m];
+      double* high = send_high_.data() + m * plane;
       for_plane(layout_, axis, n - 1,
                 [&](std::size_t i, std::size_t cell) { high[i] = double(f[cell]); });
-  }
-  const int count = int(plane) * components;
+    }
+  // Both ends count the same: num_up and num_down follow from flags all ranks share.
+  const int count_up = int(plane) * num_up, count_down = int(plane) * num_down;
   // Upward: our top plane to the rank above, the low ghost from the rank below; then down.
-  d.comm.sendrecv(send_high_.data(), count, hi, recv_low_.data(), count, lo, tag_up(axis));
-  d.comm.sendrecv(send_low_.data(), count, lo, recv_high_.data(), count, hi, tag_down(axis));
+  d.comm.sendrecv(send_high_.data(), count_up, hi, recv_low_.data(), count_up, lo, tag_up(axis));
+  d.comm.sendrecv(send_low_.data(), count_down, lo, recv_high_.data(), count_down, hi,
+                  tag_down(axis));
   // Unpack, leaving ghosts at a non-periodic domain edge (no neighbour) untouched.
-  for (int m = 0; m < components; ++m) {
-    T* f = arrays[m];
-    if (lo >= 0) {
+  if (lo >= 0)
+    for (int m = 0; m < num_up; ++m) {
+      T* f = up[m];
       const double* low = recv_low_.data() + m * plane;
       for_plane(layout_, axis, -1, [&](std::size_t i, std::size_t cell) { f[cell] = T(low[i]); });
     }
-    if (hi >= 0) {
+  if (hi >= 0)
+    for (int m = 0; m < num_down; ++m) {
+      T* f = down[m];
       const double* high = recv_high_.data() + m * plane;
       for_plane(layout_, axis, n, [&](std::size_t i, std::size_t cell) { f[cell] = T(high[i]); });
     }
+}
+
+// Which populations cross the faces of `axis`: c_q[axis] = +1 (they enter a block through
+// its low face, so they travel up) and c_q[axis] = -1 (down), in q order.
+void HaloExchange::collect_crossing() {
+  for (int a = 0; a < 3; ++a) {
+    int up = 0, down = 0;
+    for (int q = 0; q < D3Q19::Q; ++q) {
+      if (D3Q19::c[q][a] == +1) crossing_up_[a][up++] = q;
+      if (D3Q19::c[q][a] == -1) crossing_down_[a][down++] = q;
+    }
+    num_crossing_[a] = up;  // 5 each way in D3Q19
   }
 }
 
-template <class T>
-void HaloExchange::exchange_arrays(T* const* arrays, int components) {
-  // x, then y, then z: each later sweep carries the ghosts the earlier ones filled, so
-  // edge and corner ghosts arrive without diagonal messages.
-  for (int axis = 0; axis < 3; ++axis) sweep(axis, arrays, components);
-}
+void HaloExchange::exchange(PopulationField& field) { exchange(field, HaloPopulations::every()); }
 
-void HaloExchange::exchange(PopulationField& field) {
+// x, then y, then z: each later sweep carries the ghosts the earlier ones filled, so edge
+// ghosts arrive without diagonal messages. With the crossing populations only, an edge
+// ghost g = x - c_q that an owned x pulls from lies beyond the faces of exactly the axes
+// where c_q is non-zero, and c_q points into the block on each of them, so q is in the
+// crossing set of every sweep that writes g: it arrives through the same sweeps as with all
+// 19 (e.g. (1,1,0) travels up in the x and in the y sweep). D3Q19 has no corner direction,
+// so no corner ghost is pulled. A population outside a sweep's set keeps, at that sweep's
+// ghosts, whatever it held (a stale or intermediate value that nothing reads, see the
+// audit in halo_exchange.h).
+void HaloExchange::exchange(PopulationField& field, const HaloPopulations& which) {
   if (field.num_cells() != layout_.num_cells())
     throw InputError("halo exchange: population field does not match the block layout");
-  // All 19 populations travel: boundary stages (interpolated bounce-back, refill) may read
-  // any population of a ghost, not only those streaming across the face.
-  std::array<Real*, D3Q19::Q> arrays;
-  for (int q = 0; q < D3Q19::Q; ++q) arrays[q] = field.q(q);
-  exchange_arrays(arrays.data(), D3Q19::Q);
+  Real* up[D3Q19::Q];
+  Real* down[D3Q19::Q];
+  for (int axis = 0; axis < 3; ++axis) {
+    int num = D3Q19::Q;
+    if (which.all[axis]) {
+      for (int q = 0; q < D3Q19::Q; ++q) up[q] = down[q] = field.q(q);
+    } else {
+      num = num_crossing_[axis];
+      for (int m = 0; m < num; ++m) {
+        up[m] = field.q(crossing_up_[axis][m]);
+        down[m] = field.q(crossing_down_[axis][m]);
+      }
+    }
+    sweep(axis, up, num, down, num);
+  }
 }
 
 void HaloExchange::exchange_scalar(std::vector<double>& values) {
   if (values.size() != layout_.num_cells())
     throw InputError("halo exchange: scalar field does not match the block layout");
   double* arrays[1] = {values.data()};
-  exchange_arrays(arrays, 1);
+  // The same sweeps as exchange(), so edge ghosts arrive the same way.
+  for (int axis = 0; axis < 3; ++axis) sweep(axis, arrays, 1, arrays, 1);
+}
+
+bool HaloExchange::exchanges_face(int axis, int side) const {
+  return decomposition_.neighbor[axis][side] >= 0;
 }
 
 bool HaloExchange::borders_exchanged_ghost(std::size_t cell) const {

@@ -121,5 +121,5 @@ void FixLbmPore::post_run() {
   // LIGGGHTS's input loop stops after this run on all of them.
   lbm_pore::take_stop_requests(world);
   if (comm->me != 0) return;
-  lbm_pore::print_to_screen_and_log(screen, logfile, timer_.report(MPI_Wtime(), coupling_->times()).c_str());
+  lbm_pore::print_to_screen_and_log(screen, logfile, timer_.report(MPI_Wtime(), coupling_->times(), &coupling_->halo_counts()).c_str());
 }

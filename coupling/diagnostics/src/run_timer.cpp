@@ -9,12 +9,12 @@ void RunTimer::start(double now) {
   start_ = now;
 }
 
-std::string RunTimer::report(double now, const StageTimes& t) const {
+std::string RunTimer::report(double now, const StageTimes& t, const HaloCounts* halo) const {
   if (fluid_steps_ == 0) return "";
   const double total = now - start_;
   const double coupling = t.mapping + t.refill + t.moving_walls + t.force;
   const double* s = seconds_;
-  char text[800];
+  char text[1000];
   const int n = std::snprintf(
       text, sizeof text,
       "fix lbm/pore: %lld fluid steps in %.3f s: fluid %.3f s (of which mapping, refill, "
@@ -22,10 +22,17 @@ std::string RunTimer::report(double now, const StageTimes& t) const {
       "diagnostics %.3f s, DEM and the rest %.3f s; %.3g s per fluid step\n",
       fluid_steps_, total, s[kFluid], coupling, s[kLubrication], s[kDiagnostics],
       total - s[kFluid] - s[kLubrication] - s[kDiagnostics], total / double(fluid_steps_));
-  std::snprintf(text + n, sizeof text - n,
-                "fix lbm/pore: coupling stages since the lattice was built: mapping %.3f s, refill "
-                "%.3f s, halo %.3f s, moving walls %.3f s, force %.3f s, collide-stream %.3f s\n",
-                t.mapping, t.refill, t.halo, t.moving_walls, t.force, t.collide_stream);
+  const int m = std::snprintf(
+      text + n, sizeof text - n,
+      "fix lbm/pore: coupling stages since the lattice was built: mapping %.3f s, refill "
+      "%.3f s, halo %.3f s, moving walls %.3f s, force %.3f s, collide-stream %.3f s\n",
+      t.mapping, t.refill, t.halo, t.moving_walls, t.force, t.collide_stream);
+  if (halo && halo->steps > 0)
+    std::snprintf(text + n + m, sizeof text - n - m,
+                  "fix lbm/pore: halo exchange of the coupled steps: all 19 populations along "
+                  "x, y, z in %lld, %lld, %lld of %lld steps (the others: the 5 crossing each "
+                  "face)\n",
+                  halo->whole[0], halo->whole[1], halo->whole[2], halo->steps);
   return text;
 }
 

@@ -48,10 +48,21 @@ void SphereCoupling::map_and_refill(const ParticleView& view) {
     // refill.cpp), and only the averaged-density scheme reads any. The exchange is
     // collective: every rank takes it when any rank needs it. Nothing else reads ghost
     // populations before the step's own exchange, so they may stay stale.
-    long long uncovered = 0;
+    // The same sum decides, per axis, whether the step's exchange sends all 19 populations
+    // (whole_ghost_axes: Mei-Luo-Shyy may read a whole ghost node) or the crossing five:
+    // one collective call for both, and every rank sends what its neighbours expect.
+    long long counts[4] = {0, 0, 0, 0};
     if (options_.refill == RefillScheme::kEquilibriumAveragedDensity)
-      for (std::size_t cell : change.uncovered) uncovered += solver_.borders_exchanged_ghost(cell);
-    solver_.decomposition().comm.sum(&uncovered, 1);
+      for (std::size_t cell : change.uncovered) counts[0] += solver_.borders_exchanged_ghost(cell);
+    const auto whole = whole_ghost_axes(mapping_, options_.wall_scheme, solver_);
+    for (int a = 0; a < 3; ++a) counts[1 + a] = whole[a];
+    solver_.decomposition().comm.sum(counts, 4);
+    const long long uncovered = counts[0];
+    for (int a = 0; a < 3; ++a) {
+      halo_.all[a] = counts[1 + a] > 0;
+      halo_counts_.whole[a] += halo_.all[a];
+    }
+    ++halo_counts_.steps;
     if (uncovered > 0) solver_.exchange_ghost_densities(ghost_density_);
     mass_ = refill_uncovered(change, mapping_, view, options_.refill, solver_,
                              uncovered > 0 ? &ghost_density_ : nullptr);
@@ -90,7 +101,7 @@ void SphereCoupling::step(const ParticleView& view) {
   map_and_refill(view);
   {
     StageTimer t(times_.halo);
-    solver_.exchange_halo();
+    solver_.exchange_halo(halo_);
   }
   {
     StageTimer t(times_.static_walls);

@@ -7,6 +7,7 @@
 
 #include "lbm/block_layout.h"
 #include "lbm/decomposition.h"
+#include "lbm/halo_populations.h"
 #include "lbm/node_type.h"
 #include "lbm/population_field.h"
 #include "lbm/trt.h"
@@ -56,9 +57,18 @@ class FluidSolver {
   FluidSolver(const FluidSolver&) = delete;
   FluidSolver& operator=(const FluidSolver&) = delete;
 
-  // All stages in order.
+  // All stages in order; its exchange sends the five populations crossing each face
+  // (HaloPopulations::crossing()): the stages of a pure fluid step read no other ghost
+  // population (HaloExchange's audit).
   void step();
+  // All 19 populations along every axis: for a host that builds its own pipeline and may
+  // read whole ghost nodes (Mei-Luo-Shyy on static curved walls, tests).
   void exchange_halo();
+  // The populations `which` names per axis (HaloPopulations); every rank must pass the same.
+  void exchange_halo(const HaloPopulations& which);
+  // Whether the exchange fills the ghost plane on `side` (0 low, 1 high) of `axis`
+  // (HaloExchange::exchanges_face).
+  bool exchanges_face(int axis, int side) const;
   // Whether the owned cell `cell` reads a ghost that exchange_halo() fills when it looks at
   // its D3Q19 neighbours (HaloExchange::borders_exchanged_ghost).
   bool borders_exchanged_ghost(std::size_t cell) const;

@@ -5,6 +5,7 @@
 #include <chrono>
 
 #include "coupling/boundary/sphere_links.h"
+#include "coupling/boundary/whole_ghost_axes.h"
 #include "coupling/force/momentum_exchange.h"
 #include "coupling/mapping/sphere_mapping.h"
 #include "coupling/particle_view.h"
@@ -29,6 +30,13 @@ struct SphereCouplingOptions {
 struct StageTimes {
   double mapping = 0.0, refill = 0.0, halo = 0.0, static_walls = 0.0, moving_walls = 0.0,
          force = 0.0, open_boundaries = 0.0, collide_stream = 0.0;
+};
+
+// How often the step's halo exchange sent all 19 populations on each axis (the rest of the
+// steps sent the five crossing each face), over `steps` calls of map_and_refill.
+struct HaloCounts {
+  long long steps = 0;
+  std::array<long long, 3> whole{0, 0, 0};
 };
 
 // Owns the particle-dependent state of one rank's lattice (the mapping and the links) and
@@ -68,6 +76,10 @@ class SphereCoupling {
   const SphereLinks& links() const { return links_; }
   const SphereMapping& mapping() const { return mapping_; }
   const StageTimes& times() const { return times_; }
+  // The populations the step's exchange sends, per axis, as the last map_and_refill decided
+  // (all ranks alike); step() passes them to FluidSolver::exchange_halo.
+  const lbm::HaloPopulations& halo_populations() const { return halo_; }
+  const HaloCounts& halo_counts() const { return halo_counts_; }
   const SphereCouplingOptions& options() const { return options_; }
   lbm::FluidSolver& solver() { return solver_; }
 
@@ -90,6 +102,8 @@ class SphereCoupling {
   // first step whose refill reads a ghost (FluidSolver::exchange_ghost_densities).
   std::vector<double> ghost_density_;
   StageTimes times_;
+  lbm::HaloPopulations halo_ = lbm::HaloPopulations::every();
+  HaloCounts halo_counts_;
 };
 
 }  // namespace coupling

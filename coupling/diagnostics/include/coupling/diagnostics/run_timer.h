@@ -18,8 +18,10 @@ class RunTimer {
   long long fluid_steps() const { return fluid_steps_; }
 
   // Two lines ending in newlines, or "" when no fluid step was run. `stages` are the
-  // coupling's stage times since the lattice was built.
-  std::string report(double now, const StageTimes& stages) const;
+  // coupling's stage times since the lattice was built; a third line says how often the
+  // coupled steps' halo exchange sent all 19 populations per axis, where `halo` is given
+  // and counted a step.
+  std::string report(double now, const StageTimes& stages, const HaloCounts* halo = nullptr) const;
 
  private:
   double start_ = 0.0;

@@ -1,0 +1,40 @@
+#pragma once
+// SphereCoupling::step() stage by stage, with the halo exchange's populations chosen by the
+// caller: the reference (all 19) and the negative control (the crossing five only) of the
+// halo tests, against which the coupling's own choice (whole_ghost_axes) is checked.
+#include <algorithm>
+#include <cmath>
+
+#include "coupling/sphere_coupling.h"
+#include "lbm/d3q19.h"
+#include "lbm/node_type.h"
+
+namespace cases {
+
+inline void staged_step(coupling::SphereCoupling& c, const coupling::ParticleView& view,
+                        const lbm::HaloPopulations& which) {
+  lbm::FluidSolver& solver = c.solver();
+  c.map_and_refill(view);
+  solver.exchange_halo(which);
+  solver.apply_wall_bounce_back();
+  c.apply_moving_walls_and_force(view);
+  solver.apply_open_boundaries();
+  solver.collide_stream();
+}
+
+// Largest |a - b| over the owned populations of two solvers on the same block.
+inline double max_population_difference(const lbm::FluidSolver& a, const lbm::FluidSolver& b) {
+  const lbm::BlockLayout& g = a.layout();
+  double worst = 0.0;
+  for (int k = 0; k < g.size(2); ++k)
+    for (int j = 0; j < g.size(1); ++j)
+      for (int i = 0; i < g.size(0); ++i)
+        for (int q = 0; q < lbm::D3Q19::Q; ++q) {
+          const std::size_t cell = g.cell(i, j, k);
+          worst = std::max(worst, std::abs(double(a.populations().at(q, cell)) -
+                                           double(b.populations().at(q, cell))));
+        }
+  return worst;
+}
+
+}  // namespace cases
