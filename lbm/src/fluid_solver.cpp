@@ -151,13 +151,20 @@ void FluidSolver::exchange_ghost_densities(std::vector<double>& ghost_density) {
   ghost_density.resize(layout_.num_cells());
   // density(cell) summed population by population over all the sent cells: the same sum in
   // the same order (q = 0, 1, ..., 18), but each pass reads one array along the planes' rows
-  // instead of 19 arrays for every cell (the kernel has just streamed them to memory).
+  // instead of 19 arrays for every cell. The kernel has just streamed them to memory, and a
+  // row of a plane is a dozen lines, too short for the hardware to fetch ahead: the cell
+  // kAhead places further is asked for (paper scene across the flow: 0.48 ms a call before).
+  constexpr std::size_t kAhead = 64;
   const std::vector<std::size_t>& sent = halo_->sent_cells();
-  const Real* f0 = f_.q(0);
-  for (std::size_t cell : sent) ghost_density[cell] = 0.0 + f0[cell];
-  for (int q = 1; q < D3Q19::Q; ++q) {
+  const std::size_t count = sent.size();
+  double* rho = ghost_density.data();
+  for (int q = 0; q < D3Q19::Q; ++q) {
     const Real* fq = f_.q(q);
-    for (std::size_t cell : sent) ghost_density[cell] += fq[cell];
+    for (std::size_t i = 0; i < count; ++i) {
+      if (i + kAhead < count) __builtin_prefetch(fq + sent[i + kAhead]);
+      const std::size_t cell = sent[i];
+      rho[cell] = (q == 0 ? 0.0 : rho[cell]) + fq[cell];
+    }
   }
   halo_->exchange_scalar(ghost_density);
 }
