@@ -25,8 +25,10 @@ std::string RunTimer::report(double now, const StageTimes& t, const HaloCounts* 
   const int m = std::snprintf(
       text + n, sizeof text - n,
       "fix lbm/pore: coupling stages since the lattice was built: mapping %.3f s, refill "
-      "%.3f s, halo %.3f s, moving walls %.3f s, force %.3f s, collide-stream %.3f s\n",
-      t.mapping, t.refill, t.halo, t.moving_walls, t.force, t.collide_stream);
+      "%.3f s, halo %.3f s, static walls %.3f s, moving walls %.3f s, force %.3f s, open "
+      "faces %.3f s, collide-stream %.3f s\n",
+      t.mapping, t.refill, t.halo, t.static_walls, t.moving_walls, t.force, t.open_boundaries,
+      t.collide_stream);
   if (halo && halo->steps > 0)
     std::snprintf(text + n + m, sizeof text - n - m,
                   "fix lbm/pore: halo exchange of the coupled steps: all 19 populations along "
