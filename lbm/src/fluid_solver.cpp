@@ -201,7 +201,8 @@ void FluidSolver::apply_open_boundaries() {
       inlet.value = drive_.outlet_density + drive_.pressure_loss / D3Q19::cs2;
     }
     inlet.momentum_density = parameters_.incompressible ? parameters_.rho0 : 0.0;
-    open_face_mass_[0] = apply_open_face(inlet, layout_, node_type_, f_);
+    apply_open_face(inlet, layout_, node_type_, f_);
+    open_face_mass_[0] = lbm::open_face_mass(inlet, layout_, node_type_, f_);
   }
   if (owned.hi[a] == global.hi[a]) {
     OpenFace outlet;
@@ -211,7 +212,8 @@ void FluidSolver::apply_open_boundaries() {
     outlet.kind = OpenFace::kDensity;
     outlet.value = drive_.outlet_density;
     outlet.momentum_density = parameters_.incompressible ? parameters_.rho0 : 0.0;
-    open_face_mass_[1] = apply_open_face(outlet, layout_, node_type_, f_);
+    apply_open_face(outlet, layout_, node_type_, f_);
+    open_face_mass_[1] = lbm::open_face_mass(outlet, layout_, node_type_, f_);
   }
 }
 

@@ -13,26 +13,10 @@ void for_face_nodes(const OpenFace& face, const BlockLayout& layout,
                     const std::vector<std::uint8_t>& node_type, Visit visit, Ahead ahead) {
   detail::for_plane_fluid_nodes(layout, node_type, face.axis, face.local_plane, visit, ahead);
 }
-// The open-face mass (open_face_mass) of one fluid node on the face: pulled from the ghosts
-// beyond it less sent there. It reads only the node's own slots, which no other node's
-// apply_open_face writes, so it may follow that node's writes directly.
-double node_open_mass(const OpenFace& face, const std::vector<std::uint8_t>& node_type,
-                      const PopulationField& f, const std::ptrdiff_t* off, std::size_t cell) {
-  using L = D3Q19;
-  const int a = face.axis;
-  double mass = 0.0;
-  for (int q = 1; q < L::Q; ++q) {
-    if (L::c[q][a] * face.inward > 0 && node_type[cell - off[q]] == kOpen)
-      mass += f.at(q, cell - off[q]);  // pulled from beyond the face
-    else if (L::c[q][a] * face.inward < 0 && node_type[cell + off[q]] == kOpen)
-      mass -= f.at(q, cell);  // sent beyond the face: lost
-  }
-  return mass;
-}
 }  // namespace
 
-double apply_open_face(const OpenFace& face, const BlockLayout& layout,
-                       const std::vector<std::uint8_t>& node_type, PopulationField& f) {
+void apply_open_face(const OpenFace& face, const BlockLayout& layout,
+                     const std::vector<std::uint8_t>& node_type, PopulationField& f) {
   using L = D3Q19;
   const int a = face.axis;
   const int t1 = (a + 1) % 3, t2 = (a + 2) % 3;  // tangential axes
@@ -42,7 +26,6 @@ double apply_open_face(const OpenFace& face, const BlockLayout& layout,
   // The lines of the node a few places ahead are asked for while this one is computed: on
   // an x-normal face each is a line of its own, just streamed to memory by the kernel.
   const auto prefetch = [&](std::size_t ahead) { detail::prefetch_pulled(f, ahead, off); };
-  double mass = 0.0;  // open_face_mass's sum, node by node in its order
   for_face_nodes(face, layout, node_type, [&](std::size_t cell) {
     // Populations after streaming: f_q(x) = f*_q(x - c_q).
     double post[L::Q];
@@ -92,20 +75,24 @@ double apply_open_face(const OpenFace& face, const BlockLayout& layout,
           post[qo] + 6.0 * L::w[q] * m * cu - (L::c[q][t1] * n1 + L::c[q][t2] * n2);
       f.at(q, cell - off[q]) = static_cast<Real>(value);
     }
-    mass += node_open_mass(face, node_type, f, off, cell);
   }, prefetch);
-  return mass;
 }
 
 double open_face_mass(const OpenFace& face, const BlockLayout& layout,
                       const std::vector<std::uint8_t>& node_type, const PopulationField& f) {
   using L = D3Q19;
+  const int a = face.axis;
   std::ptrdiff_t off[L::Q];
   for (int q = 0; q < L::Q; ++q) off[q] = layout.offset(L::c[q][0], L::c[q][1], L::c[q][2]);
   double mass = 0.0;
   for_face_nodes(face, layout, node_type, [&](std::size_t cell) {
-    mass += node_open_mass(face, node_type, f, off, cell);
-  }, [](std::size_t) {});
+    for (int q = 1; q < L::Q; ++q) {
+      if (L::c[q][a] * face.inward > 0 && node_type[cell - off[q]] == kOpen)
+        mass += f.at(q, cell - off[q]);  // pulled from beyond the face
+      else if (L::c[q][a] * face.inward < 0 && node_type[cell + off[q]] == kOpen)
+        mass -= f.at(q, cell);  // sent beyond the face: lost
+    }
+  }, [](std::size_t) {});  // the lines apply_open_face has just read
   return mass;
 }
 

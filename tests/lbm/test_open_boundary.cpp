@@ -6,7 +6,6 @@
 #include <cstdio>
 
 #include "cases/serial_flow.h"
-#include "lbm/open_boundary.h"
 #include "lbm/pore_scene.h"
 
 TEST(OpenBoundary, FluxIsConservedThroughThePoreConstriction) {
@@ -130,37 +129,5 @@ TEST(OpenBoundary, FaceMassesAccountForTheMassChangeExactly) {
     EXPECT_GT(through, 10.0);
     EXPECT_GT(std::abs(change), 1e-3);  // the start-up changes the mass: a real test
     EXPECT_NEAR(change, booked, 1e-10 * through);
-  }
-}
-
-// apply_open_face sums the face's mass node by node as it writes (one pass over the face);
-// the sum must be open_face_mass's of the populations it leaves, bit for bit, on a flow
-// that has started up (populations off equilibrium, mass moving in and out).
-TEST(OpenBoundary, MassSummedWhileApplyingIsTheSeparateSumBitForBit) {
-  lbm::PoreSceneSpec spec{6, 2, 8, 6, 12, 7};
-  const auto g = lbm::make_pore_scene(spec);
-  lbm::FluidParameters p;
-  p.tau = 0.8;
-  p.periodic = {false, true, true};
-  lbm::FlowDrive drive;
-  drive.kind = lbm::FlowDrive::kInletVelocity;
-  drive.inlet_velocity = 0.01;
-  lbm::FluidSolver solver(g, p, drive, cases::serial_decomposition(g, p.periodic));
-  for (int s = 0; s < 60; ++s) solver.step();
-  const lbm::BlockLayout& layout = solver.layout();
-  lbm::OpenFace inlet, outlet;
-  inlet.kind = lbm::OpenFace::kVelocity;
-  inlet.value = drive.inlet_velocity;
-  outlet.inward = -1;
-  outlet.local_plane = layout.size(0) - 1;
-  outlet.kind = lbm::OpenFace::kDensity;
-  outlet.value = 1.0;
-  for (const lbm::OpenFace& face : {inlet, outlet}) {
-    lbm::PopulationField f = solver.populations();
-    const double summed = lbm::apply_open_face(face, layout, solver.node_types(), f);
-    const double separate = lbm::open_face_mass(face, layout, solver.node_types(), f);
-    std::printf("face inward %+d: mass %.17g, separately %.17g\n", face.inward, summed, separate);
-    EXPECT_NE(summed, 0.0);
-    EXPECT_EQ(summed, separate);
   }
 }

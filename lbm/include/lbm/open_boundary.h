@@ -25,10 +25,9 @@ struct OpenFace {
 };
 
 // Applies one face to the owned fluid nodes of the block lying on it. The tangential
-// velocity is set to zero. Returns open_face_mass(face, ...) of the populations it leaves,
-// summed node by node as it goes (the same sum in the same order, in one pass instead of two).
-double apply_open_face(const OpenFace& face, const BlockLayout& layout,
-                       const std::vector<std::uint8_t>& node_type, PopulationField& f);
+// velocity is set to zero.
+void apply_open_face(const OpenFace& face, const BlockLayout& layout,
+                     const std::vector<std::uint8_t>& node_type, PopulationField& f);
 
 // Mass the next streaming moves into the block through one open face: what the owned fluid
 // nodes on it pull from the ghosts beyond it (the values apply_open_face wrote) less what
