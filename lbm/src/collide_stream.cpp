@@ -40,8 +40,9 @@ using L = D3Q19;
 // solid nodes and get 0 written. No stage reads a ghost slot it has not written in the
 // same step: the halo exchange rewrites, at periodic and rank-face ghosts, every population
 // an owned node pulls (the five crossing each face, or all 19: halo_exchange.h, whose audit
-// also covers the padding cells computed here), and at a closed or open edge (ghosts the exchange leaves untouched) static
-// bounce-back and the open faces write every slot a fluid node pulls, each step
+// also covers the padding cells computed here), and at a closed or open edge (ghosts the
+// exchange leaves untouched) static bounce-back and the open faces write every slot a fluid
+// node pulls, each step
 // (FluidSolver::step). Short rows (the paper's rank block: 45 nodes) then write no partial
 // cache line at each row end and population, and the padding costs 2 computed cells a row.
 //
