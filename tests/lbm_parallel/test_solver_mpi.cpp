@@ -12,6 +12,7 @@
 #include "flow_setup.h"
 #include "lbm/decomposition.h"
 #include "lbm/macroscopic.h"
+#include "owned_pairs.h"
 
 namespace {
 using namespace lbm_parallel_test;
@@ -52,23 +53,17 @@ lbm::Decomposition decompose(const FlowCase& c, const Split& s) {
 
 // Largest |parallel - serial| over this rank's owned nodes, all ranks reduced.
 double max_difference(const lbm::FluidSolver& parallel, const lbm::FluidSolver& serial) {
-  const lbm::BlockLayout& p = parallel.layout();
-  const lbm::BlockLayout& s = serial.layout();
   double worst = 0.0;
-  for (int k = 0; k < p.size(2); ++k)
-    for (int j = 0; j < p.size(1); ++j)
-      for (int i = 0; i < p.size(0); ++i) {
-        const auto g = p.to_global(i, j, k);
-        const std::size_t a = p.cell(i, j, k), b = s.cell(g[0], g[1], g[2]);
-        EXPECT_EQ(parallel.node_types()[a], serial.node_types()[b]);
-        if (parallel.node_types()[a] != lbm::kFluid) continue;
-        for (int q = 0; q < lbm::D3Q19::Q; ++q)
-          worst = std::max(worst, std::abs(double(parallel.populations().at(q, a)) -
-                                           double(serial.populations().at(q, b))));
-        worst = std::max(worst, std::abs(parallel.density(a) - serial.density(b)));
-        for (int c = 0; c < 3; ++c)
-          worst = std::max(worst, std::abs(parallel.velocity(a)[c] - serial.velocity(b)[c]));
-      }
+  lbm_parallel_test::for_owned_pairs(parallel, serial, [&](std::size_t a, std::size_t b) {
+    EXPECT_EQ(parallel.node_types()[a], serial.node_types()[b]);
+    if (parallel.node_types()[a] != lbm::kFluid) return;
+    for (int q = 0; q < lbm::D3Q19::Q; ++q)
+      worst = std::max(worst, std::abs(double(parallel.populations().at(q, a)) -
+                                       double(serial.populations().at(q, b))));
+    worst = std::max(worst, std::abs(parallel.density(a) - serial.density(b)));
+    for (int c = 0; c < 3; ++c)
+      worst = std::max(worst, std::abs(parallel.velocity(a)[c] - serial.velocity(b)[c]));
+  });
   parallel.decomposition().comm.max(&worst, 1);
   return worst;
 }

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 #include <mpi.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -16,6 +17,7 @@
 #include "cases/staged_step.h"
 #include "coupling/sphere_coupling.h"
 #include "lbm/decomposition.h"
+#include "owned_pairs.h"
 
 namespace {
 
@@ -44,18 +46,12 @@ std::unique_ptr<lbm::FluidSolver> make(const lbm::Decomposition& d) {
 
 // Largest |parallel - serial| over this rank's owned populations, all ranks reduced.
 double max_difference(const lbm::FluidSolver& parallel, const lbm::FluidSolver& serial) {
-  const lbm::BlockLayout& p = parallel.layout();
-  const lbm::BlockLayout& s = serial.layout();
   double worst = 0.0;
-  for (int k = 0; k < p.size(2); ++k)
-    for (int j = 0; j < p.size(1); ++j)
-      for (int i = 0; i < p.size(0); ++i) {
-        const auto g = p.to_global(i, j, k);
-        const std::size_t a = p.cell(i, j, k), b = s.cell(g[0], g[1], g[2]);
-        for (int q = 0; q < lbm::D3Q19::Q; ++q)
-          worst = std::max(worst, std::abs(double(parallel.populations().at(q, a)) -
-                                           double(serial.populations().at(q, b))));
-      }
+  lbm_parallel_test::for_owned_pairs(parallel, serial, [&](std::size_t a, std::size_t b) {
+    for (int q = 0; q < lbm::D3Q19::Q; ++q)
+      worst = std::max(worst, std::abs(double(parallel.populations().at(q, a)) -
+                                       double(serial.populations().at(q, b))));
+  });
   parallel.decomposition().comm.max(&worst, 1);
   return worst;
 }
