@@ -41,35 +41,6 @@ double moving_surface_mass(const std::vector<BoundaryLink>& links, double rho0) 
   return mass;
 }
 
-LinkMassRestorer::LinkMassRestorer(const BlockLayout& layout,
-                                   const std::vector<std::uint8_t>& node_type, PopulationField& f)
-    : type_(node_type.data()) {
-  // Taken once: through a Real& the field's own pointer and size would be reloaded after
-  // every store, 19 times per link.
-  for (int p = 0; p < L::Q; ++p) {
-    pop_[p] = f.q(p);
-    offset_[p] = layout.offset(L::c[p][0], L::c[p][1], L::c[p][2]);
-  }
-}
-
-void LinkMassRestorer::remove(std::size_t x, double d) const {
-  double at_rest = 0.0;
-  // Population p reaches x from x - c_p in the next (pull) streaming.
-  for (int p = 0; p < L::Q; ++p) {
-    const std::size_t from = x - offset_[p];
-    // A ghost beyond an open face is written after this stage (the open boundary fills
-    // it): its share goes on x's own rest population, so that x's mass changes by the
-    // whole defect and the budget's books (PoreMonitor) stay exact.
-    if (type_[from] == kOpen) {
-      at_rest += L::w[p] * d;
-      continue;
-    }
-    Real& slot = pop_[p][from];
-    slot = static_cast<Real>(slot - L::w[p] * d);
-  }
-  if (at_rest != 0.0) pop_[0][x] = static_cast<Real>(pop_[0][x] - at_rest);
-}
-
 void restore_link_mass(const std::vector<BoundaryLink>& links, const BlockLayout& layout,
                        const std::vector<std::uint8_t>& node_type,
                        const std::vector<double>& per_link, PopulationField& f) {

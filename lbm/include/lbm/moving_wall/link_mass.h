@@ -63,7 +63,8 @@ LinkMassDefect link_mass_defect(const std::vector<BoundaryLink>& links, double r
 double moving_surface_mass(const std::vector<BoundaryLink>& links, double rho0);
 
 // The correction's writes, one link at a time: remove(x, delta_l) takes delta_l w_p from
-// each slot f_p(x - c_p). The arrays' addresses and offsets are taken once, at construction.
+// each slot f_p(x - c_p). The arrays' addresses and offsets are taken once, at construction
+// (link_mass_restorer.cpp).
 class LinkMassRestorer {
  public:
   LinkMassRestorer(const BlockLayout& layout, const std::vector<std::uint8_t>& node_type,
@@ -71,9 +72,14 @@ class LinkMassRestorer {
   void remove(std::size_t fluid_cell, double defect) const;
 
  private:
-  Real* pop_[D3Q19::Q];
-  std::ptrdiff_t offset_[D3Q19::Q];
+  // Slot f_p(x - c_p) is base_[x + slot_[p]] (the field is one array, direction by
+  // direction), the node it belongs to x + from_[p].
+  Real* base_;
+  std::ptrdiff_t slot_[D3Q19::Q];
+  std::ptrdiff_t from_[D3Q19::Q];
   const std::uint8_t* type_;
+
+  void remove_next_to_open(std::size_t fluid_cell, double defect) const;
 };
 
 // Removes the measured defects as described above; per_link from link_mass_defect.
