@@ -35,36 +35,54 @@ using L = lbm::D3Q19;
 // Appends the links of spheres [first, last), sphere by sphere, each over its surface cells
 // in mapping order and the directions in q order: the order of the links, and with it every
 // sum over them, is that of the particles and does not depend on how they are split.
-void append_links(const SphereMapping& mapping, const ParticleView& view,
+void append_links(const SphereMapping& mapping, const ParticleView& particles,
                   const std::vector<std::uint8_t>& node_type, std::size_t first, std::size_t last,
                   SphereLinks& out) {
   const lbm::BlockLayout& layout = mapping.layout();
+  // Local copies: the stores into `out` could alias the originals, which the compiler would
+  // then reload for every link.
+  const ParticleView view = particles;
+  const PeriodicBox box = mapping.box();
+  const std::uint8_t* const type = node_type.data();
+  const int n[3] = {layout.size(0), layout.size(1), layout.size(2)};
   std::ptrdiff_t offset[L::Q];  // cell-index step of c_q
   for (int q = 0; q < L::Q; ++q) offset[q] = layout.offset(L::c[q][0], L::c[q][1], L::c[q][2]);
   for (std::size_t p = first; p < last; ++p) {
     const Vec3 centre = view.x(p);
     const double R = view.r(p);
+    // The link from fluid node x = wall - c_q (local coordinates w - c_q), which sends
+    // population q into the wall node.
+    const auto add_link = [&](std::size_t x, int q, const std::array<int, 3>& w) {
+      // The node's global position from the wall cell's coordinates (no division).
+      const auto g = layout.to_global(w[0] - L::c[q][0], w[1] - L::c[q][1], w[2] - L::c[q][2]);
+      const Vec3 d = box.displacement(centre, Vec3{double(g[0]), double(g[1]), double(g[2])});
+      const double s = link_fraction(d, L::c[q], R);
+      const Vec3 arm{d[0] + s * L::c[q][0], d[1] + s * L::c[q][1], d[2] + s * L::c[q][2]};
+      lbm::BoundaryLink link;
+      link.fluid_cell = x;
+      link.q = q;
+      link.fraction = s;
+      link.wall_velocity = view.surface_velocity(p, arm);
+      out.links.push_back(link);
+      out.particle.push_back(int(p));
+      out.arm.push_back(arm);
+    };
     for (std::size_t wall : mapping.surface_cells(p)) {
       const auto w = layout.coords(wall);
+      // Off the owned box's outer layer (and its ghosts) all 18 neighbours are owned: only
+      // their type decides. Most surface cells are such.
+      const bool inner = w[0] >= 1 && w[1] >= 1 && w[2] >= 1 && w[0] < n[0] - 1 &&
+                         w[1] < n[1] - 1 && w[2] < n[2] - 1;
+      if (inner) {
+        const std::uint8_t* const at = type + wall;
+        for (int q = 1; q < L::Q; ++q)
+          if (at[-offset[q]] == lbm::kFluid) add_link(wall - offset[q], q, w);
+        continue;
+      }
       for (int q = 1; q < L::Q; ++q) {
-        // The fluid node x = wall - c_q sends population q into the wall node.
-        const int xi = w[0] - L::c[q][0], xj = w[1] - L::c[q][1], xk = w[2] - L::c[q][2];
-        if (!layout.is_owned(xi, xj, xk)) continue;
+        if (!layout.is_owned(w[0] - L::c[q][0], w[1] - L::c[q][1], w[2] - L::c[q][2])) continue;
         const std::size_t x = wall - offset[q];
-        if (node_type[x] != lbm::kFluid) continue;
-        // The node's global position from the wall cell's coordinates (no division).
-        const auto g = layout.to_global(xi, xj, xk);
-        const Vec3 d = mapping.box().displacement(centre, Vec3{double(g[0]), double(g[1]), double(g[2])});
-        const double s = link_fraction(d, L::c[q], R);
-        const Vec3 arm{d[0] + s * L::c[q][0], d[1] + s * L::c[q][1], d[2] + s * L::c[q][2]};
-        lbm::BoundaryLink link;
-        link.fluid_cell = x;
-        link.q = q;
-        link.fraction = s;
-        link.wall_velocity = view.surface_velocity(p, arm);
-        out.links.push_back(link);
-        out.particle.push_back(int(p));
-        out.arm.push_back(arm);
+        if (type[x] == lbm::kFluid) add_link(x, q, w);
       }
     }
   }

@@ -16,12 +16,14 @@ using L = D3Q19;
 
 LinkMassRestorer::LinkMassRestorer(const BlockLayout& layout,
                                    const std::vector<std::uint8_t>& node_type, PopulationField& f)
-    : base_(f.q(0)), type_(node_type.data()) {
+    : rest_(f.q(0)), type_(node_type.data()) {
   // Taken once: through a Real& the field's own pointer and size would be reloaded after
   // every store, 19 times per link.
   for (int p = 0; p < L::Q; ++p) {
     from_[p] = -layout.offset(L::c[p][0], L::c[p][1], L::c[p][2]);
-    slot_[p] = (f.q(p) - base_) + from_[p];
+    // Inside the field's one array (an offset is smaller than a direction's share of it),
+    // and so is slot_[p] + x for every cell x whose neighbour x - c_p is a cell.
+    slot_[p] = f.q(p) + from_[p];
   }
 }
 
@@ -29,16 +31,16 @@ void LinkMassRestorer::remove(std::size_t x, double d) const {
   // Population p reaches x from x - c_p in the next (pull) streaming. Nodes next to an open
   // face are few: the 19 types are tested first, and the others' 19 slots written without a
   // test in between (the same writes, each slot once).
+  const std::uint8_t* const type = type_ + x;
 #pragma GCC unroll 19
   for (int p = 0; p < L::Q; ++p)
-    if (type_[x + from_[p]] == kOpen) {
+    if (type[from_[p]] == kOpen) {
       remove_next_to_open(x, d);
       return;
     }
-  Real* const at = base_ + x;
 #pragma GCC unroll 19
   for (int p = 0; p < L::Q; ++p) {
-    Real& slot = at[slot_[p]];
+    Real& slot = slot_[p][x];
     slot = static_cast<Real>(slot - L::w[p] * d);
   }
 }
@@ -53,10 +55,10 @@ void LinkMassRestorer::remove_next_to_open(std::size_t x, double d) const {
       at_rest += L::w[p] * d;
       continue;
     }
-    Real& slot = base_[x + slot_[p]];
+    Real& slot = slot_[p][x];
     slot = static_cast<Real>(slot - L::w[p] * d);
   }
-  if (at_rest != 0.0) base_[x] = static_cast<Real>(base_[x] - at_rest);
+  if (at_rest != 0.0) rest_[x] = static_cast<Real>(rest_[x] - at_rest);
 }
 
 }  // namespace lbm::moving_wall

@@ -72,10 +72,9 @@ class LinkMassRestorer {
   void remove(std::size_t fluid_cell, double defect) const;
 
  private:
-  // Slot f_p(x - c_p) is base_[x + slot_[p]] (the field is one array, direction by
-  // direction), the node it belongs to x + from_[p].
-  Real* base_;
-  std::ptrdiff_t slot_[D3Q19::Q];
+  // Slot f_p(x - c_p) is slot_[p][x], the node it belongs to x + from_[p].
+  Real* rest_;
+  Real* slot_[D3Q19::Q];
   std::ptrdiff_t from_[D3Q19::Q];
   const std::uint8_t* type_;
 
