@@ -29,22 +29,35 @@ struct DirectionOffsets {
   }
 };
 
+// The two slots a link of direction q touches, by its fluid cell x: f_q(x) (what x sends)
+// and f_{-q}(x + c_q) (where the returned population is pulled from). Taken once per call,
+// so that a link costs no index arithmetic beyond its cell.
+struct LinkSlots {
+  const Real* out[D3Q19::Q];
+  Real* back[D3Q19::Q];  // f.q(-q) + offset of c_q: inside the field, as is back[q] + x
+  LinkSlots(const DirectionOffsets& offsets, PopulationField& f) {
+    for (int q = 0; q < D3Q19::Q; ++q) {
+      out[q] = f.q(q);
+      back[q] = f.q(D3Q19::opposite(q)) + offsets.of[q];
+    }
+  }
+};
+
 // Link l; `momentum` and `populations`, if non-null, already sized.
 template <class Scheme>
 inline void apply_link(const std::vector<BoundaryLink>& links, std::size_t l, const Scheme& scheme,
-                       const DirectionOffsets& offsets, PopulationField& f,
-                       std::vector<std::array<double, 3>>* momentum,
+                       const DirectionOffsets& offsets, const LinkSlots& slots,
+                       PopulationField& f, std::vector<std::array<double, 3>>* momentum,
                        std::vector<LinkPopulations>* populations) {
   using L = D3Q19;
   const BoundaryLink& link = links[l];
   const int q = link.q;
-  const std::ptrdiff_t offset = offsets.of[q];
-  const double back = scheme.returning_population(link, offset, f);
-  Real& slot = f.at(L::opposite(q), link.fluid_cell + offset);
+  const double back = scheme.returning_population(link, offsets.of[q], f);
+  Real& slot = slots.back[q][link.fluid_cell];
   slot = static_cast<Real>(back);
-  if (populations) (*populations)[l] = {f.at(q, link.fluid_cell), slot};
+  if (populations) (*populations)[l] = {slots.out[q][link.fluid_cell], slot};
   if (momentum) {
-    const double m = f.at(q, link.fluid_cell) + back;
+    const double m = slots.out[q][link.fluid_cell] + back;
     (*momentum)[l] = {m * L::c[q][0], m * L::c[q][1], m * L::c[q][2]};
   }
 }
@@ -56,8 +69,9 @@ void apply_range(const std::vector<BoundaryLink>& links, std::size_t first, std:
                  std::vector<std::array<double, 3>>* momentum,
                  std::vector<LinkPopulations>* populations) {
   const DirectionOffsets offsets(layout);  // once per call
+  const LinkSlots slots(offsets, f);
   for (std::size_t l = first; l < last; ++l)
-    apply_link(links, l, scheme, offsets, f, momentum, populations);
+    apply_link(links, l, scheme, offsets, slots, f, momentum, populations);
 }
 
 // moving_wall::sweep (link_sweep.h): block b's links through the scheme, their defects
@@ -70,11 +84,12 @@ void sweep(const std::vector<BoundaryLink>& links, const LinkSweep& order, const
   populations.resize(links.size());
   per_link.resize(links.size());
   const DirectionOffsets offsets(layout);
+  const LinkSlots slots(offsets, f);
   const std::size_t blocks = order.num_blocks(), lag = order.lag();
   for (std::size_t b = 0; b < blocks + lag; ++b) {
     if (b < blocks)
       for (const std::uint32_t* l = order.begin(b); l != order.end(b); ++l) {
-        apply_link(links, *l, scheme, offsets, f, nullptr, &populations);
+        apply_link(links, *l, scheme, offsets, slots, f, nullptr, &populations);
         per_link[*l] = link_defect(links[*l], rho0, populations[*l]);
       }
     if (b >= lag)
