@@ -43,26 +43,25 @@ struct LinkSlots {
   }
 };
 
-// Link l; `momentum` and `populations`, if non-null, already sized.
+// One link; its `momentum` and `populations` entries written where non-null.
 template <class Scheme>
-inline void apply_link(const std::vector<BoundaryLink>& links, std::size_t l, const Scheme& scheme,
+inline void apply_link(const BoundaryLink& link, const Scheme& scheme,
                        const DirectionOffsets& offsets, const LinkSlots& slots,
-                       PopulationField& f, std::vector<std::array<double, 3>>* momentum,
-                       std::vector<LinkPopulations>* populations) {
+                       PopulationField& f, std::array<double, 3>* momentum,
+                       LinkPopulations* populations) {
   using L = D3Q19;
-  const BoundaryLink& link = links[l];
   const int q = link.q;
   const double back = scheme.returning_population(link, offsets.of[q], f);
   Real& slot = slots.back[q][link.fluid_cell];
   slot = static_cast<Real>(back);
-  if (populations) (*populations)[l] = {slots.out[q][link.fluid_cell], slot};
+  if (populations) *populations = {slots.out[q][link.fluid_cell], slot};
   if (momentum) {
     const double m = slots.out[q][link.fluid_cell] + back;
-    (*momentum)[l] = {m * L::c[q][0], m * L::c[q][1], m * L::c[q][2]};
+    *momentum = {m * L::c[q][0], m * L::c[q][1], m * L::c[q][2]};
   }
 }
 
-// Links [first, last).
+// Links [first, last); `momentum` and `populations`, if non-null, already sized.
 template <class Scheme>
 void apply_range(const std::vector<BoundaryLink>& links, std::size_t first, std::size_t last,
                  const Scheme& scheme, const BlockLayout& layout, PopulationField& f,
@@ -71,7 +70,8 @@ void apply_range(const std::vector<BoundaryLink>& links, std::size_t first, std:
   const DirectionOffsets offsets(layout);  // once per call
   const LinkSlots slots(offsets, f);
   for (std::size_t l = first; l < last; ++l)
-    apply_link(links, l, scheme, offsets, slots, f, momentum, populations);
+    apply_link(links[l], scheme, offsets, slots, f, momentum ? &(*momentum)[l] : nullptr,
+               populations ? &(*populations)[l] : nullptr);
 }
 
 // moving_wall::sweep (link_sweep.h): block b's links through the scheme, their defects
@@ -85,16 +85,21 @@ void sweep(const std::vector<BoundaryLink>& links, const LinkSweep& order, const
   per_link.resize(links.size());
   const DirectionOffsets offsets(layout);
   const LinkSlots slots(offsets, f);
+  // The arrays' addresses in locals: through the vectors they would be reloaded after every
+  // call into the scheme.
+  const BoundaryLink* const link = links.data();
+  LinkPopulations* const pops = populations.data();
+  double* const defect = per_link.data();
   const std::size_t blocks = order.num_blocks(), lag = order.lag();
   for (std::size_t b = 0; b < blocks + lag; ++b) {
     if (b < blocks)
-      for (const std::uint32_t* l = order.begin(b); l != order.end(b); ++l) {
-        apply_link(links, *l, scheme, offsets, slots, f, nullptr, &populations);
-        per_link[*l] = link_defect(links[*l], rho0, populations[*l]);
+      for (const std::uint32_t *l = order.begin(b), *end = order.end(b); l != end; ++l) {
+        apply_link(link[*l], scheme, offsets, slots, f, nullptr, &pops[*l]);
+        defect[*l] = link_defect(link[*l], rho0, pops[*l]);
       }
     if (b >= lag)
-      for (const std::uint32_t* l = order.begin(b - lag); l != order.end(b - lag); ++l)
-        restorer.remove(links[*l].fluid_cell, per_link[*l]);
+      for (const std::uint32_t *l = order.begin(b - lag), *end = order.end(b - lag); l != end; ++l)
+        restorer.remove(link[*l].fluid_cell, defect[*l]);
   }
 }
 
