@@ -76,6 +76,8 @@ class LinkMassRestorer {
   Real* rest_;
   Real* slot_[D3Q19::Q];
   std::ptrdiff_t from_[D3Q19::Q];
+  std::ptrdiff_t row_[4];   // +- e_2, +- e_3: the rows beside x along the first axis
+  std::ptrdiff_t edge_[4];  // +- e_2 +- e_3
   const std::uint8_t* type_;
 
   void remove_next_to_open(std::size_t fluid_cell, double defect) const;
