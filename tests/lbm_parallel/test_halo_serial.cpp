@@ -22,14 +22,23 @@ class SerialHalo : public ::testing::TestWithParam<int> {
     const int bits = GetParam();
     return {(bits & 1) != 0, (bits & 2) != 0, (bits & 4) != 0};
   }
+  // The whole box on this rank, its populations filled with the test pattern (fill()).
+  struct Block {
+    lbm::Decomposition d;
+    lbm::BlockLayout layout;
+    lbm::PopulationField f;
+    lbm::HaloExchange halo;
+    explicit Block(const lbm::Decomposition& decomposition)
+        : d(decomposition), layout(d.owned), f(layout), halo(d, layout) {
+      fill(f, layout);
+    }
+  };
+  Block block() const { return Block(lbm::Decomposition::serial(global_box(), periodic())); }
 };
 
 TEST_P(SerialHalo, GhostsHoldPeriodicImagesOrStayUntouched) {
-  const auto d = lbm::Decomposition::serial(global_box(), periodic());
-  const lbm::BlockLayout layout(d.owned);
-  lbm::PopulationField f(layout);
-  fill(f, layout);
-  lbm::HaloExchange halo(d, layout);
+  Block b = block();
+  auto& [d, layout, f, halo] = b;
   EXPECT_EQ(density_mismatches(halo, f, layout), 0);
   halo.exchange(f);
   EXPECT_EQ(mismatches(f, d, layout), 0);
@@ -45,11 +54,8 @@ TEST_P(SerialHalo, GhostsHoldPeriodicImagesOrStayUntouched) {
 // The five crossing populations per face give every owned node the values it pulls with
 // all 19 (edges through the x -> y -> z sweeps), and nothing else is sent.
 TEST_P(SerialHalo, CrossingPopulationsGiveTheSamePulledValues) {
-  const auto d = lbm::Decomposition::serial(global_box(), periodic());
-  const lbm::BlockLayout layout(d.owned);
-  lbm::PopulationField f(layout);
-  fill(f, layout);
-  lbm::HaloExchange halo(d, layout);
+  Block b = block();
+  auto& [d, layout, f, halo] = b;
   EXPECT_EQ(pull_mismatches(halo, f, layout), 0);
   EXPECT_EQ(non_crossing_written(halo, f, layout), 0);
   // All 19 on some axes (the sphere coupling's flags), the five on the others: the ghosts of
