@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "lbm/d3q19.h"
 #include "lbm/node_type.h"
@@ -46,6 +47,11 @@ using L = D3Q19;
 // (FluidSolver::step). Short rows (the paper's rank block: 45 nodes) then write no partial
 // cache line at each row end and population, and the padding costs 2 computed cells a row.
 //
+// The solver runs the kernel in place (PopulationField: the AA pattern), src and dst two
+// placements of one field: every node writes its 19 outputs into the 19 slots it pulled
+// from, and no other node reads or writes them, so the chunks below need no order among
+// nodes. A chunk reads all its nodes' inputs before it writes any output.
+//
 // A run is processed in chunks of kChunk nodes: the populations are pulled straight from
 // the source array, collided, and the results gathered in a small L1/L2-resident SoA buffer
 // (19 contiguous streams) that is written out, with streaming stores where the arrays are
@@ -74,16 +80,26 @@ constexpr int kHeldBack = int(detail::kCacheLine / sizeof(Real));
 // stores when both population arrays take at most this share of the last-level cache, so
 // that a second rank and the coupling's data fit beside them.
 constexpr double kPlainStoresUpToCacheShare = 0.25;
+// In place (the AA pattern, PopulationField) a plain store writes a line that has just been
+// read, so it costs no write-allocate, and the field is half the size: the paper's rank
+// block (13 MB in double precision, two ranks in a 32 MiB L3) ran at 94 MLUPS per rank
+// with plain stores against 46-56 streamed (session 8, a scratch driver timing
+// lbm::collide_stream alone, two processes at once). Out of the cache the two are alike
+// (128^3: 44 against 48 MLUPS on one thread, 78 and 77 on two), so plain stores while
+// the field takes at most half the cache.
+constexpr double kPlainStoresInPlaceUpToCacheShare = 0.5;
 // The q loops carry "GCC unroll 19": GCC peels at most 16 iterations by default, and only a
 // fully unrolled loop turns the velocity components into constants (a 2.5x speed-up).
 
 // Cells [first, first + length) of one plane, starting at x = 0 of a row; rows are `pitch`
 // cells apart, of which the first `row` are owned.
+// A run may start anywhere in an owned row: x0 is the x of its first cell.
 struct Run {
   std::size_t first;
   int length;
   int pitch;
   int row;
+  int x0;
 };
 
 // fluid_mask[i] = 1 for the fluid nodes among run positions [start, start + m), 0 for the
@@ -91,18 +107,19 @@ struct Run {
 void fill_fluid_mask(const std::uint8_t* __restrict type, const Run& run, int start, int m,
                      double* __restrict fluid_mask) {
   for (int i = 0; i < m; ++i) fluid_mask[i] = type[run.first + start + i] == kFluid ? 1.0 : 0.0;
-  for (int row_start = start - start % run.pitch; row_start < start + m; row_start += run.pitch) {
-    const int pad_first = row_start + run.row > start ? row_start + run.row : start;
-    const int pad_end = row_start + run.pitch < start + m ? row_start + run.pitch : start + m;
-    for (int p = pad_first; p < pad_end; ++p) fluid_mask[p - start] = 0.0;
+  const int from = start + run.x0;  // counted from x = 0 of the run's first row
+  for (int row_start = from - from % run.pitch; row_start < from + m; row_start += run.pitch) {
+    const int pad_first = row_start + run.row > from ? row_start + run.row : from;
+    const int pad_end = row_start + run.pitch < from + m ? row_start + run.pitch : from + m;
+    for (int p = pad_first; p < pad_end; ++p) fluid_mask[p - from] = 0.0;
   }
 }
 
 // kIncompressible: He & Luo's equilibrium, the momentum rho0 u and rho only in the zeroth
 // order (a compile-time choice, so the standard kernel's arithmetic is untouched).
 template <int kChunk, bool kForce, bool kIncompressible>
-void collide_stream_run(const Real* __restrict src, Real* __restrict dst,
-                        const std::uint8_t* __restrict type, std::size_t n, const Run& run,
+void collide_stream_run(const Real* const* src, Real* const* dst,
+                        const std::uint8_t* __restrict type, const Run& run,
                         const std::ptrdiff_t* off, double omega_plus,
                         double omega_minus, double fx, double fy, double fz, double rho0) {
   constexpr bool streaming = kChunk == kChunkStreaming;
@@ -118,7 +135,7 @@ void collide_stream_run(const Real* __restrict src, Real* __restrict dst,
     double* out[L::Q];
     #pragma GCC unroll 19
     for (int q = 0; q < L::Q; ++q) {
-      pull[q] = src + q * n + first - off[q];
+      pull[q] = src[q] + first - off[q];
       out[q] = f[q] + held[q];
     }
     fill_fluid_mask(type, run, start, m, fluid_mask);
@@ -179,7 +196,7 @@ void collide_stream_run(const Real* __restrict src, Real* __restrict dst,
     const bool last = start + m == run.length;
     #pragma GCC unroll 19
     for (int q = 0; q < L::Q; ++q) {
-      Real* to = dst + q * n + first - held[q];
+      Real* to = dst[q] + first - held[q];
       const int count = held[q] + m;
       if constexpr (!streaming) {
         for (int i = 0; i < count; ++i) to[i] = static_cast<Real>(f[q][i]);
@@ -216,15 +233,16 @@ long last_level_cache_bytes() {
   return size;
 }
 
-// Whether a block's two population arrays are larger than kPlainStoresUpToCacheShare of
-// the last-level cache (streaming stores pay); where the cache size is unknown, they are.
-bool arrays_exceed_cache(std::size_t cells) {
+// Whether a block's population arrays (two, or one in place) are larger than their share
+// of the last-level cache (streaming stores pay); where the cache size is unknown, they are.
+bool output_exceeds_cache(std::size_t cells, bool in_place) {
   static const long cache = last_level_cache_bytes();  // asked once: files, or cpuid in a VM
-  const double bytes = 2.0 * L::Q * double(cells) * sizeof(Real);
-  return cache <= 0 || bytes > kPlainStoresUpToCacheShare * double(cache);
+  const double bytes = (in_place ? 1.0 : 2.0) * L::Q * double(cells) * sizeof(Real);
+  const double share = in_place ? kPlainStoresInPlaceUpToCacheShare : kPlainStoresUpToCacheShare;
+  return cache <= 0 || bytes > share * double(cache);
 }
 
-using RunKernel = void (*)(const Real*, Real*, const std::uint8_t*, std::size_t, const Run&,
+using RunKernel = void (*)(const Real* const*, Real* const*, const std::uint8_t*, const Run&,
                           const std::ptrdiff_t*, double, double, double, double, double, double);
 
 template <int kChunk>
@@ -246,12 +264,28 @@ void collide_stream(const CollideStreamArgs& a) {
   const bool forced = a.force[0] != 0.0 || a.force[1] != 0.0 || a.force[2] != 0.0;
   using Stores = CollideStreamArgs::Stores;
   const bool streaming = a.stores == Stores::kStreaming ||
-                         (a.stores == Stores::kByCacheSize && arrays_exceed_cache(n));
+                         (a.stores == Stores::kByCacheSize && output_exceeds_cache(n, a.in_place));
   // The run kernel of the options, chosen once (no option is looked up per cell).
   const auto run = streaming ? run_kernel<kChunkStreaming>(a.incompressible, forced)
                              : run_kernel<kChunkPlain>(a.incompressible, forced);
   const int nx = g.size(0), ny = g.size(1), nz = g.size(2);
   if (nx <= 0 || ny <= 0 || nz <= 0) return;
+  if (a.spans) {
+    // The caller's spans, in order, split statically over the threads.
+    const std::ptrdiff_t count = std::ptrdiff_t(a.num_spans);
+#pragma omp parallel
+    {
+#pragma omp for schedule(static) nowait
+      for (std::ptrdiff_t i = 0; i < count; ++i) {
+        const KernelSpan& span = a.spans[i];
+        const Run r{span.first, span.length, g.padded(0), nx, g.coords(span.first)[0]};
+        run(a.src.data(), a.dst.data(), a.node_type, r, off, a.omega_plus, a.omega_minus,
+            a.force[0], a.force[1], a.force[2], a.rho0);
+      }
+      detail::streaming_store_fence();
+    }
+    return;
+  }
   // Each plane is one run, or a few where there are fewer planes than threads; the runs
   // do not overlap, so no two threads write the same value.
 #ifdef _OPENMP
@@ -267,13 +301,47 @@ void collide_stream(const CollideStreamArgs& a) {
       for (int part = 0; part < parts; ++part) {
         const int j0 = part * ny / parts, j1 = (part + 1) * ny / parts;
         if (j0 == j1) continue;
-        const Run r{g.cell(0, j0, k), (j1 - j0 - 1) * g.padded(0) + nx, g.padded(0), nx};
-        run(a.src, a.dst, a.node_type, n, r, off, a.omega_plus, a.omega_minus,
+        const Run r{g.cell(0, j0, k), (j1 - j0 - 1) * g.padded(0) + nx, g.padded(0), nx, 0};
+        run(a.src.data(), a.dst.data(), a.node_type, r, off, a.omega_plus, a.omega_minus,
             a.force[0], a.force[1], a.force[2], a.rho0);
       }
     // Before the region's closing barrier: every thread's runs are in memory after it.
     detail::streaming_store_fence();
   }
+}
+
+std::vector<KernelSpan> spans_without_solid(const BlockLayout& g, const std::uint8_t* node_type) {
+  std::vector<KernelSpan> spans;
+  const int nx = g.size(0), ny = g.size(1), nz = g.size(2);
+  if (nx <= 0 || ny <= 0 || nz <= 0) return spans;
+  const int pitch = g.padded(0);
+  for (int k = 0; k < nz; ++k) {
+    // A plane's owned rows and the x padding between them, one stretch of memory; a cell
+    // to compute is an owned one that is not a static wall.
+    const std::size_t plane = g.cell(0, 0, k);
+    const int length = (ny - 1) * pitch + nx;
+    const auto computed = [&](int p) { return p % pitch < nx && node_type[plane + p] != kSolid; };
+    int p = 0;
+    while (p < length) {
+      while (p < length && !computed(p)) ++p;
+      if (p == length) break;
+      const int begin = p;
+      int end = p;  // one past the last computed cell of the span
+      while (p < length) {
+        if (computed(p)) {
+          end = ++p;
+          continue;
+        }
+        int gap_end = p;
+        while (gap_end < length && !computed(gap_end)) ++gap_end;
+        if (gap_end == length || gap_end - p >= kMinSkippedCells) break;
+        p = gap_end;  // a short gap is computed (zeros) rather than splitting the span
+      }
+      spans.push_back({plane + std::size_t(begin), end - begin});
+      p = end;
+    }
+  }
+  return spans;
 }
 
 }  // namespace lbm

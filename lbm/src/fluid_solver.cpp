@@ -1,5 +1,6 @@
 #include "lbm/fluid_solver.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <utility>
@@ -45,10 +46,10 @@ FluidSolver::FluidSolver(const VoxelGeometry& geometry, const FluidParameters& p
   decomposition_.periodic = parameters.periodic;
   validate(geometry_, drive_, decomposition_);
   f_ = PopulationField(layout_);
-  f_next_ = PopulationField(layout_);
   halo_ = std::make_unique<HaloExchange>(decomposition_, layout_);
   build_node_types();
   build_wall_links();
+  kernel_spans_ = spans_without_solid(layout_, node_type_.data());
   initialise_equilibrium(parameters_.rho0, {0.0, 0.0, 0.0});
 }
 
@@ -86,9 +87,11 @@ void FluidSolver::build_node_types() {
 }
 
 void FluidSolver::build_wall_links() {
-  wall_slot_.clear();
-  wall_source_.clear();
-  const std::size_t n = layout_.num_cells();
+  using P = PopulationField::Placement;
+  for (int p = 0; p < 2; ++p) {
+    wall_slot_[p].clear();
+    wall_source_[p].clear();
+  }
   for (int k = 0; k < layout_.size(2); ++k)
     for (int j = 0; j < layout_.size(1); ++j)
       for (int i = 0; i < layout_.size(0); ++i) {
@@ -98,8 +101,10 @@ void FluidSolver::build_wall_links() {
           const std::size_t y =
               x - layout_.offset(D3Q19::c[q][0], D3Q19::c[q][1], D3Q19::c[q][2]);
           if (node_type_[y] != kSolid) continue;
-          wall_slot_.push_back(q * n + y);
-          wall_source_.push_back(D3Q19::opposite(q) * n + x);
+          for (const P p : {P::kReversed, P::kForward}) {
+            wall_slot_[int(p)].push_back(f_.index(p, q, y));
+            wall_source_[int(p)].push_back(f_.index(p, D3Q19::opposite(q), x));
+          }
         }
       }
 }
@@ -178,8 +183,10 @@ bool FluidSolver::is_exchanged_ghost(std::size_t cell) const {
 // returns to x reversed one step later, f_q(x, t+1) = f*_{-q}(x, t).
 void FluidSolver::apply_wall_bounce_back() {
   Real* data = f_.raw().data();
-  const std::size_t links = wall_slot_.size();
-  for (std::size_t l = 0; l < links; ++l) data[wall_slot_[l]] = data[wall_source_[l]];
+  const std::vector<std::size_t>& slot = wall_slot_[int(f_.placement())];
+  const std::vector<std::size_t>& source = wall_source_[int(f_.placement())];
+  const std::size_t links = slot.size();
+  for (std::size_t l = 0; l < links; ++l) data[slot[l]] = data[source[l]];
 }
 
 void FluidSolver::apply_open_boundaries() {
@@ -219,9 +226,16 @@ void FluidSolver::apply_open_boundaries() {
 }
 
 void FluidSolver::collide_stream() {
+  // In place (PopulationField: the AA pattern): read under the field's placement, written
+  // under the other one, into the same slots.
+  const PopulationField::Placement next = other(f_.placement());
   CollideStreamArgs args;
-  args.src = f_.raw().data();
-  args.dst = f_next_.raw().data();
+  const std::array<Real*, D3Q19::Q> src = f_.arrays(f_.placement());
+  std::copy(src.begin(), src.end(), args.src.begin());
+  args.dst = f_.arrays(next);
+  args.in_place = true;
+  args.spans = kernel_spans_.data();
+  args.num_spans = kernel_spans_.size();
   args.node_type = node_type_.data();
   args.layout = layout_;
   args.omega_plus = trt_.omega_plus;
@@ -230,7 +244,7 @@ void FluidSolver::collide_stream() {
   args.incompressible = parameters_.incompressible;
   args.rho0 = parameters_.rho0;
   lbm::collide_stream(args);
-  std::swap(f_, f_next_);
+  f_.set_placement(next);
   ++time_step_;
 }
 
@@ -243,7 +257,7 @@ void FluidSolver::step() {
 }
 
 double FluidSolver::bytes_per_node() const {
-  const double bytes = double(f_.raw().capacity() + f_next_.raw().capacity()) * sizeof(Real) +
+  const double bytes = double(f_.raw().capacity()) * sizeof(Real) +
                        double(node_type_.capacity()) * sizeof(std::uint8_t);
   return bytes / double(layout_.num_cells());
 }

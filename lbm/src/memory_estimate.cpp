@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <limits>
@@ -53,8 +54,14 @@ double lattice_bytes(const std::array<int, 3>& owned, const std::array<int, 3>& 
   const std::array<int, 3> padded{owned[0] + 2 * BlockLayout::kGhost,
                                   owned[1] + 2 * BlockLayout::kGhost,
                                   owned[2] + 2 * BlockLayout::kGhost};
-  const double per_cell = 2.0 * D3Q19::Q * double(real_bytes) + 1.0;
-  return nodes(padded) * per_cell + geometry_bytes(global);
+  // One population field (streamed in place, PopulationField) and the node type. Each of
+  // the field's 19 arrays has a padding of one link's reach (a plane and a row) at both
+  // ends, in whole 64-byte lines.
+  const double line = 64.0 / double(real_bytes);
+  const auto whole_lines = [line](double values) { return std::ceil(values / line) * line; };
+  const double reach = double(padded[0]) * padded[1] + padded[0];
+  const double per_array = whole_lines(nodes(padded)) + 2.0 * whole_lines(reach);
+  return D3Q19::Q * per_array * double(real_bytes) + nodes(padded) + geometry_bytes(global);
 }
 
 double geometry_bytes(const std::array<int, 3>& dims) { return nodes(dims); }

@@ -6,7 +6,8 @@
 // of several rows with the x padding inside; a wrong offset or a misplaced padding cell
 // shows here as a node off its reference; both ways of storing (streaming and plain) are
 // checked. Its output on the owned nodes is also the same bit for bit on one and two
-// threads and whatever the destination held before.
+// threads and whatever the destination held before, and in place (the AA pattern of
+// lbm::PopulationField, both placements) the same bit for bit as into a second array.
 #include <gtest/gtest.h>
 
 #ifdef _OPENMP
@@ -21,10 +22,18 @@
 #include "lbm/collide_stream.h"
 #include "lbm/d3q19.h"
 #include "lbm/node_type.h"
+#include "lbm/population_field.h"
 
 namespace {
 
 using L = lbm::D3Q19;
+
+// The 19 arrays of a flat SoA vector of 19 x n values.
+std::array<lbm::Real*, L::Q> arrays_of(std::vector<lbm::Real>& v, std::size_t n) {
+  std::array<lbm::Real*, L::Q> a{};
+  for (int q = 0; q < L::Q; ++q) a[std::size_t(q)] = v.data() + std::size_t(q) * n;
+  return a;
+}
 
 struct KernelCase {
   lbm::BlockLayout layout;
@@ -32,7 +41,7 @@ struct KernelCase {
   std::vector<std::uint8_t> type;
   lbm::CollideStreamArgs args(bool forced, bool incompressible) const {
     lbm::CollideStreamArgs a;
-    a.src = src.data();
+    for (int q = 0; q < L::Q; ++q) a.src[std::size_t(q)] = src.data() + std::size_t(q) * layout.num_cells();
     a.node_type = type.data();
     a.layout = layout;
     a.omega_plus = 1.0 / 0.8;
@@ -133,7 +142,7 @@ TEST(CollideStream, EveryOwnedNodeGetsItsCollisionOrZero) {
                                 : lbm::CollideStreamArgs::Stores::kStreaming;
       std::vector<lbm::Real> dst(L::Q * n, lbm::Real(-3.0));
       lbm::CollideStreamArgs a = base;
-      a.dst = dst.data();
+      a.dst = arrays_of(dst, n);
       lbm::collide_stream(a);
       int wrong = 0;
       for_owned(c.layout, [&](std::size_t cell) {
@@ -158,10 +167,10 @@ TEST(CollideStream, OwnedOutputIsTheSameOnTwoThreadsAndOverAnyOldContent) {
     a.stores = lbm::CollideStreamArgs::Stores::kStreaming;
     std::vector<lbm::Real> one(L::Q * n, lbm::Real(0.0)), two(L::Q * n, lbm::Real(5.0));
     set_threads(1);
-    a.dst = one.data();
+    a.dst = arrays_of(one, n);
     lbm::collide_stream(a);
     set_threads(2);
-    a.dst = two.data();
+    a.dst = arrays_of(two, n);
     lbm::collide_stream(a);
     set_threads(1);
     int differing = 0;
@@ -170,5 +179,139 @@ TEST(CollideStream, OwnedOutputIsTheSameOnTwoThreadsAndOverAnyOldContent) {
         differing += std::memcmp(&one[q * n + cell], &two[q * n + cell], sizeof(lbm::Real)) != 0;
     });
     EXPECT_EQ(differing, 0) << "block " << dims[0] << " x " << dims[1] << " x " << dims[2];
+  }
+}
+
+// In place: the field's populations are read under one placement and written under the
+// other into the same slots (each node's output where its input was pulled from). Two
+// steps, one from each placement, on one and two threads and with both ways of storing:
+// every owned node's output is the same bit for bit as the kernel's into a second array,
+// and the owned output of the first step survives as the second step's input (no node
+// wrote into another node's slots).
+TEST(CollideStream, InPlaceGivesTheSecondArrayResultUnderBothPlacements) {
+  using Placement = lbm::PopulationField::Placement;
+  for (const auto& dims : kBlocks) {
+    for (int variant = 0; variant < 4; ++variant) {
+      KernelCase c = random_case(dims, 7);
+      const std::size_t n = c.layout.num_cells();
+      lbm::PopulationField field(c.layout);
+      for (std::size_t cell = 0; cell < n; ++cell)
+        for (int q = 0; q < L::Q; ++q) field.at(q, cell) = c.src[std::size_t(q) * n + cell];
+      set_threads(variant & 1 ? 2 : 1);
+      int differing = 0;
+      for (int step = 0; step < 2; ++step) {
+        // The reference: the same input into a second array.
+        lbm::CollideStreamArgs a = c.args(true, false);
+        a.stores = variant & 2 ? lbm::CollideStreamArgs::Stores::kStreaming
+                               : lbm::CollideStreamArgs::Stores::kByCacheSize;
+        std::vector<lbm::Real> expected(L::Q * n, lbm::Real(0.0));
+        a.dst = arrays_of(expected, n);
+        lbm::collide_stream(a);
+        // In place.
+        const Placement from = field.placement(), to = lbm::other(from);
+        const auto read = field.arrays(from);
+        for (int q = 0; q < L::Q; ++q) a.src[std::size_t(q)] = read[std::size_t(q)];
+        a.dst = field.arrays(to);
+        a.in_place = true;
+        lbm::collide_stream(a);
+        field.set_placement(to);
+        for_owned(c.layout, [&](std::size_t cell) {
+          for (int q = 0; q < L::Q; ++q) {
+            const lbm::Real got = field.at(q, cell);
+            differing += std::memcmp(&got, &expected[std::size_t(q) * n + cell], sizeof got) != 0;
+          }
+        });
+        // The next step's input: this output, and at every other cell what the field holds
+        // there now (the same cells as the reference pulls).
+        for (std::size_t cell = 0; cell < n; ++cell)
+          for (int q = 0; q < L::Q; ++q) c.src[std::size_t(q) * n + cell] = field.at(q, cell);
+      }
+      set_threads(1);
+      EXPECT_EQ(differing, 0) << "block " << dims[0] << " x " << dims[1] << " x " << dims[2]
+                              << ", variant " << variant;
+    }
+  }
+}
+
+namespace {
+// A random case with a static wall across it: the solid slab x in [nx/4, nx/2) (a stretch
+// long enough to split a span where the rows are) and the random types elsewhere.
+KernelCase walled_case(std::array<int, 3> dims, unsigned seed) {
+  KernelCase c = random_case(dims, seed);
+  for (int k = -1; k <= dims[2]; ++k)
+    for (int j = -1; j <= dims[1]; ++j)
+      for (int i = dims[0] / 4; i < dims[0] / 2; ++i) c.type[c.layout.cell(i, j, k)] = lbm::kSolid;
+  return c;
+}
+}  // namespace
+
+// The spans cover every owned cell that is not a static wall exactly once and nothing
+// beyond the owned rows and their x padding; what they leave out are static walls only,
+// in gaps of at least kMinSkippedCells cells.
+TEST(CollideStream, SpansCoverEveryOwnedCellButStaticWallsOnce) {
+  for (const auto& dims : kBlocks) {
+    const KernelCase c = walled_case({dims[0] * 2, dims[1], dims[2]}, 3);
+    const auto spans = lbm::spans_without_solid(c.layout, c.type.data());
+    std::vector<int> covered(c.layout.num_cells(), 0);
+    for (const lbm::KernelSpan& s : spans) {
+      const auto first = c.layout.coords(s.first), last = c.layout.coords(s.first + s.length - 1);
+      EXPECT_TRUE(c.layout.is_owned(first[0], first[1], first[2]) &&
+                  c.layout.is_owned(last[0], last[1], last[2]));
+      EXPECT_NE(c.type[s.first], lbm::kSolid);
+      EXPECT_NE(c.type[s.first + s.length - 1], lbm::kSolid);
+      for (int p = 0; p < s.length; ++p) {
+        const auto ijk = c.layout.coords(s.first + p);
+        // Inside a plane's rows: owned, or the x padding between two rows.
+        EXPECT_TRUE(ijk[1] >= 0 && ijk[1] < c.layout.size(1) && ijk[2] >= 0 && ijk[2] < c.layout.size(2));
+        ++covered[s.first + p];
+      }
+    }
+    int wrong = 0;
+    for_owned(c.layout, [&](std::size_t cell) {
+      if (covered[cell] > 1 || (covered[cell] == 0 && c.type[cell] != lbm::kSolid)) ++wrong;
+    });
+    EXPECT_EQ(wrong, 0) << "block " << dims[0] * 2 << " x " << dims[1] << " x " << dims[2];
+    // Consecutive spans of a plane are at least kMinSkippedCells apart.
+    for (std::size_t i = 1; i < spans.size(); ++i) {
+      const std::size_t end = spans[i - 1].first + spans[i - 1].length;
+      if (c.layout.coords(end - 1)[2] == c.layout.coords(spans[i].first)[2])
+        EXPECT_GE(spans[i].first - end, std::size_t(lbm::kMinSkippedCells));
+    }
+  }
+}
+
+// With spans, every computed node gets exactly what the whole-block kernel gives it, and a
+// left-out static wall keeps what its slots held (the kernel neither reads nor writes it).
+TEST(CollideStream, SpansGiveTheWholeBlockResultAndLeaveWallsAlone) {
+  for (const auto& dims : kBlocks) {
+    const KernelCase c = walled_case({dims[0] * 2, dims[1], dims[2]}, 5);
+    const std::size_t n = c.layout.num_cells();
+    const auto spans = lbm::spans_without_solid(c.layout, c.type.data());
+    std::vector<int> covered(n, 0);
+    for (const lbm::KernelSpan& s : spans)
+      for (int p = 0; p < s.length; ++p) covered[s.first + p] = 1;
+    for (int threads = 1; threads <= 2; ++threads) {
+      set_threads(threads);
+      lbm::CollideStreamArgs a = c.args(true, false);
+      std::vector<lbm::Real> whole(L::Q * n, lbm::Real(-3.0)), part(L::Q * n, lbm::Real(-3.0));
+      a.dst = arrays_of(whole, n);
+      lbm::collide_stream(a);
+      a.dst = arrays_of(part, n);
+      a.spans = spans.data();
+      a.num_spans = spans.size();
+      lbm::collide_stream(a);
+      int wrong = 0;
+      for_owned(c.layout, [&](std::size_t cell) {
+        for (int q = 0; q < L::Q; ++q) {
+          const std::size_t i = std::size_t(q) * n + cell;
+          if (covered[cell] ? std::memcmp(&whole[i], &part[i], sizeof(lbm::Real)) != 0
+                            : part[i] != lbm::Real(-3.0))
+            ++wrong;
+        }
+      });
+      EXPECT_EQ(wrong, 0) << "block " << dims[0] * 2 << " x " << dims[1] << " x " << dims[2]
+                          << ", " << threads << " threads";
+    }
+    set_threads(1);
   }
 }

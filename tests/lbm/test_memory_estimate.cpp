@@ -6,16 +6,24 @@
 
 #include "lbm/input_error.h"
 #include "lbm/memory_estimate.h"
+#include "lbm/population_field.h"
 #include "lbm/pore_scene.h"
 #include "lbm/real.h"
 
-TEST(MemoryEstimate, LatticeBytesCountBothPopulationFieldsNodeTypesAndTheGeometry) {
-  // 4 x 5 x 6 owned nodes, one ghost layer: 6 x 7 x 8 cells of 2 * 19 reals and a type byte,
-  // plus a byte per voxel of the 10 x 10 x 10 global geometry.
-  EXPECT_EQ(lbm::lattice_bytes({4, 5, 6}, {10, 10, 10}, 8),
-            6.0 * 7 * 8 * (2 * 19 * 8 + 1) + 1000.0);
-  EXPECT_EQ(lbm::lattice_bytes({4, 5, 6}, {10, 10, 10}, 4),
-            6.0 * 7 * 8 * (2 * 19 * 4 + 1) + 1000.0);
+TEST(MemoryEstimate, LatticeBytesCountThePopulationFieldNodeTypesAndTheGeometry) {
+  // 4 x 5 x 6 owned nodes, one ghost layer: 6 x 7 x 8 = 336 cells. One population field
+  // streamed in place: 19 arrays of the 336 cells and a padding of 6 x 7 + 6 = 48 values
+  // (whole lines: 48 doubles, 48 floats) at both ends; a type byte per cell; a byte per
+  // voxel of the 10 x 10 x 10 global geometry.
+  EXPECT_EQ(lbm::lattice_bytes({4, 5, 6}, {10, 10, 10}, 8), 19.0 * (336 + 2 * 48) * 8 + 336 + 1000.0);
+  EXPECT_EQ(lbm::lattice_bytes({4, 5, 6}, {10, 10, 10}, 4), 19.0 * (336 + 2 * 48) * 4 + 336 + 1000.0);
+  // The estimate is what the field allocates: a 90 x 20 x 40 block (the paper's rank).
+  const lbm::Box box{{0, 0, 0}, {90, 20, 40}};
+  const lbm::BlockLayout layout(box);
+  const lbm::PopulationField field(layout);
+  EXPECT_EQ(lbm::lattice_bytes({90, 20, 40}, {90, 40, 40}),
+            double(field.raw().size() * sizeof(lbm::Real)) + double(layout.num_cells()) +
+                90.0 * 40 * 40);
   EXPECT_EQ(lbm::lattice_bytes({4, 5, 6}, {10, 10, 10}),
             lbm::lattice_bytes({4, 5, 6}, {10, 10, 10}, sizeof(lbm::Real)));
   // No overflow for absurd sizes.

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "lbm/block_layout.h"
+#include "lbm/collide_stream.h"
 #include "lbm/decomposition.h"
 #include "lbm/halo_populations.h"
 #include "lbm/node_type.h"
@@ -47,7 +48,7 @@ struct FlowDrive {
 // One rank's share of the fluid. A step is a named pipeline of stages so that coupling/
 // can insert its moving-boundary stages between them:
 //   exchange_halo -> apply_wall_bounce_back -> [moving boundaries] -> apply_open_boundaries
-//   -> collide_stream (and swap).
+//   -> collide_stream (in place: the field changes placement, PopulationField).
 // State between steps: post-collision populations f*(x, t) in populations().
 class FluidSolver {
  public:
@@ -105,10 +106,10 @@ class FluidSolver {
   // Changes the drive between steps (e.g. a pressure ramp).
   void set_drive(const FlowDrive& drive);
 
-  // Memory the solver holds per stored lattice node (owned and ghost): the two population
-  // arrays (current and next) and the node type, from their actual sizes. Storage that grows
-  // with the wall surface (bounce-back link lists, halo buffers) is not in it. 305 bytes in
-  // double precision, 153 in single.
+  // Memory the solver holds per stored lattice node (owned and ghost): the population field
+  // (one, streamed in place, with its padding) and the node type, from their actual sizes.
+  // Storage that grows with the wall surface (bounce-back link lists, halo buffers) is not
+  // in it. About 153 bytes in double precision, 77 in single.
   double bytes_per_node() const;
 
   // Macroscopic values at a local cell, from the stored post-collision populations:
@@ -134,12 +135,16 @@ class FluidSolver {
   Decomposition decomposition_;
   TrtParameters trt_;
   BlockLayout layout_;
-  PopulationField f_, f_next_;
+  PopulationField f_;  // streamed in place: one field, no second array
   std::vector<std::uint8_t> node_type_;
-  // Half-way bounce-back on static walls: wall_slot_[n] (index into the population
-  // array, a slot at a solid cell) receives the value at wall_source_[n] (the opposite
-  // population of the fluid node the link leaves).
-  std::vector<std::size_t> wall_slot_, wall_source_;
+  // Half-way bounce-back on static walls: wall_slot_[p][n] (index into the population
+  // storage under placement p, a slot at a solid cell) receives the value at
+  // wall_source_[p][n] (the opposite population of the fluid node the link leaves).
+  std::vector<std::size_t> wall_slot_[2], wall_source_[2];
+  // The cells collide_stream computes: all owned ones but the static walls, whose slots
+  // only the bounce-back above writes and reads (spans_without_solid). Built from the
+  // node types with the wall links, which assume the same static walls.
+  std::vector<KernelSpan> kernel_spans_;
   std::unique_ptr<HaloExchange> halo_;
   long long time_step_ = 0;
 };
