@@ -274,8 +274,9 @@ TEST(CollideStream, SpansCoverEveryOwnedCellButStaticWallsOnce) {
     // Consecutive spans of a plane are at least kMinSkippedCells apart.
     for (std::size_t i = 1; i < spans.size(); ++i) {
       const std::size_t end = spans[i - 1].first + spans[i - 1].length;
-      if (c.layout.coords(end - 1)[2] == c.layout.coords(spans[i].first)[2])
+      if (c.layout.coords(end - 1)[2] == c.layout.coords(spans[i].first)[2]) {
         EXPECT_GE(spans[i].first - end, std::size_t(lbm::kMinSkippedCells));
+      }
     }
   }
 }
