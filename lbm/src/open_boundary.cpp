@@ -13,15 +13,23 @@ void for_face_nodes(const OpenFace& face, const BlockLayout& layout,
                     const std::vector<std::uint8_t>& node_type, Visit visit, Ahead ahead) {
   detail::for_plane_fluid_nodes(layout, node_type, face.axis, face.local_plane, visit, ahead);
 }
-}  // namespace
 
-void apply_open_face(const OpenFace& face, const BlockLayout& layout,
-                     const std::vector<std::uint8_t>& node_type, PopulationField& f) {
+// One face, its axis and inward direction known at compile time: the q loops unroll and
+// every test of c_q along the normal folds away (the same sums in the same order as the
+// loops over q with those tests at run time; every product with a c_q component is exact).
+template <int kAxis, int kInward>
+void apply_face(const OpenFace& face, const BlockLayout& layout,
+                const std::vector<std::uint8_t>& node_type, PopulationField& f) {
   using L = D3Q19;
-  const int a = face.axis;
-  const int t1 = (a + 1) % 3, t2 = (a + 2) % 3;  // tangential axes
+  constexpr int a = kAxis;
+  constexpr int t1 = (a + 1) % 3, t2 = (a + 2) % 3;  // tangential axes
   std::ptrdiff_t off[L::Q];
-  for (int q = 0; q < L::Q; ++q) off[q] = layout.offset(L::c[q][0], L::c[q][1], L::c[q][2]);
+  // pulled[q][x] = f_q(x - c_q): the population x pulls, taken once per face.
+  Real* pulled[L::Q];
+  for (int q = 0; q < L::Q; ++q) {
+    off[q] = layout.offset(L::c[q][0], L::c[q][1], L::c[q][2]);
+    pulled[q] = f.q(q) - off[q];
+  }
 
   // The lines of the node a few places ahead are asked for while this one is computed: on
   // an x-normal face each is a line of its own, just streamed to memory by the kernel.
@@ -29,12 +37,14 @@ void apply_open_face(const OpenFace& face, const BlockLayout& layout,
   for_face_nodes(face, layout, node_type, [&](std::size_t cell) {
     // Populations after streaming: f_q(x) = f*_q(x - c_q).
     double post[L::Q];
-    for (int q = 0; q < L::Q; ++q) post[q] = f.at(q, cell - off[q]);
+#pragma GCC unroll 19
+    for (int q = 0; q < L::Q; ++q) post[q] = pulled[q][cell];
 
     double tangential_sum = 0.0, outgoing_sum = 0.0;
     double transverse[3] = {0.0, 0.0, 0.0};
+#pragma GCC unroll 19
     for (int q = 0; q < L::Q; ++q) {
-      const int cn = L::c[q][a] * face.inward;
+      const int cn = L::c[q][a] * kInward;
       if (cn == 0) {
         tangential_sum += post[q];
         transverse[t1] += post[q] * L::c[q][t1];
@@ -50,50 +60,90 @@ void apply_open_face(const OpenFace& face, const BlockLayout& layout,
     if (face.momentum_density > 0.0) {
       m = face.momentum_density;
       if (face.kind == OpenFace::kVelocity) {
-        u_n = face.value * face.inward;
+        u_n = face.value * kInward;
         rho = known + m * u_n;
       } else {
         rho = face.value;
         u_n = (rho - known) / m;
       }
     } else if (face.kind == OpenFace::kVelocity) {
-      u_n = face.value * face.inward;
+      u_n = face.value * kInward;
       rho = m = known / (1.0 - u_n);
     } else {
       rho = m = face.value;
       u_n = 1.0 - known / rho;
     }
     double u[3] = {0.0, 0.0, 0.0};
-    u[a] = u_n * face.inward;
+    u[a] = u_n * kInward;
     // Transverse momentum correction N_t = 1/2 sum_{c.n=0} f c_t - rho u_t / 3 (u_t = 0).
     const double n1 = 0.5 * transverse[t1], n2 = 0.5 * transverse[t2];
+#pragma GCC unroll 19
     for (int q = 0; q < L::Q; ++q) {
-      if (L::c[q][a] * face.inward <= 0) continue;  // known
+      if (L::c[q][a] * kInward <= 0) continue;  // known
       const int qo = L::opposite(q);
       const double cu = L::c[q][0] * u[0] + L::c[q][1] * u[1] + L::c[q][2] * u[2];
       const double value =
           post[qo] + 6.0 * L::w[q] * m * cu - (L::c[q][t1] * n1 + L::c[q][t2] * n2);
-      f.at(q, cell - off[q]) = static_cast<Real>(value);
+      pulled[q][cell] = static_cast<Real>(value);
     }
   }, prefetch);
 }
 
-double open_face_mass(const OpenFace& face, const BlockLayout& layout,
-                      const std::vector<std::uint8_t>& node_type, const PopulationField& f) {
+template <int kAxis, int kInward>
+double face_mass(const OpenFace& face, const BlockLayout& layout,
+                 const std::vector<std::uint8_t>& node_type, const PopulationField& f) {
   using L = D3Q19;
-  const int a = face.axis;
+  constexpr int a = kAxis;
   std::ptrdiff_t off[L::Q];
-  for (int q = 0; q < L::Q; ++q) off[q] = layout.offset(L::c[q][0], L::c[q][1], L::c[q][2]);
+  const Real* own[L::Q];
+  for (int q = 0; q < L::Q; ++q) {
+    off[q] = layout.offset(L::c[q][0], L::c[q][1], L::c[q][2]);
+    own[q] = f.q(q);
+  }
+  const std::uint8_t* const type = node_type.data();
   double mass = 0.0;
   for_face_nodes(face, layout, node_type, [&](std::size_t cell) {
+#pragma GCC unroll 19
     for (int q = 1; q < L::Q; ++q) {
-      if (L::c[q][a] * face.inward > 0 && node_type[cell - off[q]] == kOpen)
-        mass += f.at(q, cell - off[q]);  // pulled from beyond the face
-      else if (L::c[q][a] * face.inward < 0 && node_type[cell + off[q]] == kOpen)
-        mass -= f.at(q, cell);  // sent beyond the face: lost
+      if (L::c[q][a] * kInward > 0 && type[cell - off[q]] == kOpen)
+        mass += own[q][cell - off[q]];  // pulled from beyond the face
+      else if (L::c[q][a] * kInward < 0 && type[cell + off[q]] == kOpen)
+        mass -= own[q][cell];  // sent beyond the face: lost
     }
   }, [](std::size_t) {});  // the lines apply_open_face has just read
   return mass;
+}
+
+// The face's instance for its axis and direction.
+template <template <int, int> class Call, typename... Args>
+auto by_face(const OpenFace& face, Args&&... args) {
+  const bool in = face.inward > 0;
+  switch (face.axis) {
+    case 0: return in ? Call<0, +1>::run(args...) : Call<0, -1>::run(args...);
+    case 1: return in ? Call<1, +1>::run(args...) : Call<1, -1>::run(args...);
+    default: return in ? Call<2, +1>::run(args...) : Call<2, -1>::run(args...);
+  }
+}
+template <int kAxis, int kInward>
+struct ApplyFace {
+  template <typename... Args>
+  static void run(Args&... args) { apply_face<kAxis, kInward>(args...); }
+};
+template <int kAxis, int kInward>
+struct FaceMass {
+  template <typename... Args>
+  static double run(Args&... args) { return face_mass<kAxis, kInward>(args...); }
+};
+}  // namespace
+
+void apply_open_face(const OpenFace& face, const BlockLayout& layout,
+                     const std::vector<std::uint8_t>& node_type, PopulationField& f) {
+  by_face<ApplyFace>(face, face, layout, node_type, f);
+}
+
+double open_face_mass(const OpenFace& face, const BlockLayout& layout,
+                      const std::vector<std::uint8_t>& node_type, const PopulationField& f) {
+  return by_face<FaceMass>(face, face, layout, node_type, f);
 }
 
 }  // namespace lbm
