@@ -91,9 +91,9 @@ constexpr double kPlainStoresInPlaceUpToCacheShare = 0.5;
 // The q loops carry "GCC unroll 19": GCC peels at most 16 iterations by default, and only a
 // fully unrolled loop turns the velocity components into constants (a 2.5x speed-up).
 
-// Cells [first, first + length) of one plane, starting at x = 0 of a row; rows are `pitch`
-// cells apart, of which the first `row` are owned.
-// A run may start anywhere in an owned row: x0 is the x of its first cell.
+// Cells [first, first + length) of one plane, starting at x = x0 of a row (0 for a whole
+// plane, anywhere in an owned row for a span); rows are `pitch` cells apart, of which the
+// first `row` are owned.
 struct Run {
   std::size_t first;
   int length;
