@@ -58,8 +58,6 @@ class PopulationField {
   // The whole storage, padding included: its layout depends on placement().
   Storage& raw() { return data_; }
   const Storage& raw() const { return data_; }
-  // Values stored per cell (19, and the padding's share).
-  double values_per_cell() const { return n_ == 0 ? 0.0 : double(data_.size()) / double(n_); }
 
  private:
   std::size_t n_ = 0;
