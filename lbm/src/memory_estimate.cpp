@@ -56,7 +56,9 @@ double lattice_bytes(const std::array<int, 3>& owned, const std::array<int, 3>& 
                                   owned[2] + 2 * BlockLayout::kGhost};
   // One population field (streamed in place, PopulationField) and the node type. Each of
   // the field's 19 arrays has a padding of one link's reach (a plane and a row) at both
-  // ends, in whole 64-byte lines.
+  // ends, in whole 64-byte lines. The same shape as PopulationField's constructor, here in
+  // doubles and for any precision: the guard must refuse absurd sizes (10^27 nodes) without
+  // overflowing, before anything is allocated (test_memory_estimate.cpp checks the two agree).
   const double line = 64.0 / double(real_bytes);
   const auto whole_lines = [line](double values) { return std::ceil(values / line) * line; };
   const double reach = double(padded[0]) * padded[1] + padded[0];

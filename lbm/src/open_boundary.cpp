@@ -1,5 +1,7 @@
 #include "lbm/open_boundary.h"
 
+#include <type_traits>
+
 #include "lbm/d3q19.h"
 #include "lbm/node_type.h"
 #include "plane_nodes.h"
@@ -114,36 +116,35 @@ double face_mass(const OpenFace& face, const BlockLayout& layout,
   return mass;
 }
 
-// The face's instance for its axis and direction.
-template <template <int, int> class Call, typename... Args>
-auto by_face(const OpenFace& face, Args&&... args) {
+// call(axis, inward) with both as compile-time constants (std::integral_constant): the
+// face's instance for its axis and direction.
+template <typename Call>
+auto by_face(const OpenFace& face, Call call) {
+  using std::integral_constant;
   const bool in = face.inward > 0;
   switch (face.axis) {
-    case 0: return in ? Call<0, +1>::run(args...) : Call<0, -1>::run(args...);
-    case 1: return in ? Call<1, +1>::run(args...) : Call<1, -1>::run(args...);
-    default: return in ? Call<2, +1>::run(args...) : Call<2, -1>::run(args...);
+    case 0: return in ? call(integral_constant<int, 0>{}, integral_constant<int, +1>{})
+                      : call(integral_constant<int, 0>{}, integral_constant<int, -1>{});
+    case 1: return in ? call(integral_constant<int, 1>{}, integral_constant<int, +1>{})
+                      : call(integral_constant<int, 1>{}, integral_constant<int, -1>{});
+    default: return in ? call(integral_constant<int, 2>{}, integral_constant<int, +1>{})
+                       : call(integral_constant<int, 2>{}, integral_constant<int, -1>{});
   }
 }
-template <int kAxis, int kInward>
-struct ApplyFace {
-  template <typename... Args>
-  static void run(Args&... args) { apply_face<kAxis, kInward>(args...); }
-};
-template <int kAxis, int kInward>
-struct FaceMass {
-  template <typename... Args>
-  static double run(Args&... args) { return face_mass<kAxis, kInward>(args...); }
-};
 }  // namespace
 
 void apply_open_face(const OpenFace& face, const BlockLayout& layout,
                      const std::vector<std::uint8_t>& node_type, PopulationField& f) {
-  by_face<ApplyFace>(face, face, layout, node_type, f);
+  by_face(face, [&](auto axis, auto inward) {
+    apply_face<decltype(axis)::value, decltype(inward)::value>(face, layout, node_type, f);
+  });
 }
 
 double open_face_mass(const OpenFace& face, const BlockLayout& layout,
                       const std::vector<std::uint8_t>& node_type, const PopulationField& f) {
-  return by_face<FaceMass>(face, face, layout, node_type, f);
+  return by_face(face, [&](auto axis, auto inward) {
+    return face_mass<decltype(axis)::value, decltype(inward)::value>(face, layout, node_type, f);
+  });
 }
 
 }  // namespace lbm
