@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "lbm/d3q19.h"
@@ -123,6 +124,7 @@ void collide_stream_run(const Real* const* src, Real* const* dst,
                         const std::ptrdiff_t* off, double omega_plus,
                         double omega_minus, double fx, double fy, double fz, double rho0) {
   constexpr bool streaming = kChunk == kChunkStreaming;
+  using Out = std::conditional_t<streaming, double, Real>;
   const double source_even = 1.0 - 0.5 * omega_plus;
   const double source_odd = 1.0 - 0.5 * omega_minus;
   alignas(64) double f[L::Q][kHeldBack + kChunk];
@@ -132,11 +134,15 @@ void collide_stream_run(const Real* const* src, Real* const* dst,
     const int m = run.length - start < kChunk ? run.length - start : kChunk;
     const std::size_t first = run.first + start;
     const Real* pull[L::Q];
-    double* out[L::Q];
+    // Plain stores go straight into the field (in place or not, a node's outputs are slots
+    // no other node of the chunk reads); streaming stores into the buffer, whose lines
+    // streaming_store_keep_tail writes whole.
+    Out* out[L::Q];
     #pragma GCC unroll 19
     for (int q = 0; q < L::Q; ++q) {
       pull[q] = src[q] + first - off[q];
-      out[q] = f[q] + held[q];
+      if constexpr (streaming) out[q] = f[q] + held[q];
+      else out[q] = dst[q] + first;
     }
     fill_fluid_mask(type, run, start, m, fluid_mask);
 #pragma omp simd
@@ -170,7 +176,7 @@ void collide_stream_run(const Real* const* src, Real* const* dst,
             kIncompressible ? L::w[0] * (rho - rho0 * uu) : L::w[0] * rho * (1.0 - uu);
         double result = fin[0] - omega_plus * (fin[0] - feq);
         if (kForce) result += source_even * L::w[0] * (-3.0 * uf);
-        out[0][i] = fluid * result;
+        out[0][i] = static_cast<Out>(fluid * result);
       }
       // Pairs (q, q+1) are opposite: split into symmetric and antisymmetric parts.
       #pragma GCC unroll 19
@@ -189,19 +195,16 @@ void collide_stream_run(const Real* const* src, Real* const* dst,
           source_plus = source_even * w * (9.0 * cu * cf - 3.0 * uf);
           source_minus = source_odd * w * 3.0 * cf;
         }
-        out[q][i] = fluid * (a - relax_plus - relax_minus + source_plus + source_minus);
-        out[q + 1][i] = fluid * (b - relax_plus + relax_minus + source_plus - source_minus);
+        out[q][i] = static_cast<Out>(fluid * (a - relax_plus - relax_minus + source_plus + source_minus));
+        out[q + 1][i] = static_cast<Out>(fluid * (b - relax_plus + relax_minus + source_plus - source_minus));
       }
     }
+    if constexpr (!streaming) continue;
     const bool last = start + m == run.length;
     #pragma GCC unroll 19
     for (int q = 0; q < L::Q; ++q) {
       Real* to = dst[q] + first - held[q];
       const int count = held[q] + m;
-      if constexpr (!streaming) {
-        for (int i = 0; i < count; ++i) to[i] = static_cast<Real>(f[q][i]);
-        continue;
-      }
       const int kept = detail::streaming_store_keep_tail(to, f[q], count, last);
       for (int i = 0; i < kept; ++i) f[q][i] = f[q][count - kept + i];
       held[q] = kept;
