@@ -24,14 +24,12 @@
 // of accuracy is kept (the accuracy tests measure it). Purely local: every slot it writes is
 // pulled by x alone, so no halo exchange and no global sum; halo slots written are the
 // copies x pulls.
-#include <cmath>
 #include <cstdint>
 #include <vector>
 
 #include "lbm/block_layout.h"
 #include "lbm/d3q19.h"
 #include "lbm/link_boundary.h"
-#include "lbm/moving_wall/moving_wall_scheme.h"
 #include "lbm/population_field.h"
 
 namespace lbm::moving_wall {
@@ -41,19 +39,11 @@ namespace lbm::moving_wall {
 struct LinkMassDefect {
   double net = 0.0;
   double absolute = 0.0;
-  // One more link, in link order. Inline, as link_defect below: the sweep calls both once
-  // per link (in.pore_small: 4.6 % of the run in the two calls, link_sweep.h).
-  void add(double defect) {
-    net += defect;
-    absolute += std::abs(defect);
-  }
+  void add(double defect);  // one more link, in link order
 };
 
-// delta_l of one link from its populations (apply_links' `populations` output): what the
-// link returned minus what half-way bounce-back would have returned.
-inline double link_defect(const BoundaryLink& link, double rho0, const LinkPopulations& populations) {
-  return populations.back - (populations.out - wall_term(link.q, rho0, link.wall_velocity));
-}
+// delta_l of one link from its populations (apply_links' `populations` output).
+double link_defect(const BoundaryLink& link, double rho0, const LinkPopulations& populations);
 
 // The defects of the links' populations as apply_links left them (its `populations`
 // output: no lattice access); per link into `per_link` if non-null (kept by the caller so
