@@ -81,14 +81,13 @@ constexpr int kHeldBack = int(detail::kCacheLine / sizeof(Real));
 // stores when both population arrays take at most this share of the last-level cache, so
 // that a second rank and the coupling's data fit beside them.
 constexpr double kPlainStoresUpToCacheShare = 0.25;
-// In place (the AA pattern, PopulationField) a plain store writes a line that has just been
-// read, so it costs no write-allocate, and the field is half the size: the paper's rank
-// block (13 MB in double precision, two ranks in a 32 MiB L3) ran at 94 MLUPS per rank
-// with plain stores against 46-56 streamed (session 8, a scratch driver timing
-// lbm::collide_stream alone, two processes at once). Out of the cache the two are alike
-// (128^3: 44 against 48 MLUPS on one thread, 78 and 77 on two), so plain stores while
-// the field takes at most half the cache.
-constexpr double kPlainStoresInPlaceUpToCacheShare = 0.5;
+// In place (the AA pattern, PopulationField) always plain stores, written straight from the
+// arithmetic into the field: a plain store writes a line that has just been read, so it
+// costs no write-allocate, and the 19 memcpy calls per chunk of the buffered path are gone.
+// Session 9 (bench_lbm, 2 interleaved pairs, in place, plain against streamed beyond half
+// the L3): 128^3 on one thread 104-106 against 78 MLUPS, on two 132-147 against 117-118;
+// 64^3 105-113 against 68-70 on one thread. (Session 8's plain stores went through the
+// buffer and were no faster than streamed ones out of the cache.)
 // The q loops carry "GCC unroll 19": GCC peels at most 16 iterations by default, and only a
 // fully unrolled loop turns the velocity components into constants (a 2.5x speed-up).
 
@@ -236,13 +235,12 @@ long last_level_cache_bytes() {
   return size;
 }
 
-// Whether a block's population arrays (two, or one in place) are larger than their share
-// of the last-level cache (streaming stores pay); where the cache size is unknown, they are.
-bool output_exceeds_cache(std::size_t cells, bool in_place) {
+// Whether a block's two population arrays are larger than their share of the last-level
+// cache (streaming stores pay); where the cache size is unknown, they are.
+bool output_exceeds_cache(std::size_t cells) {
   static const long cache = last_level_cache_bytes();  // asked once: files, or cpuid in a VM
-  const double bytes = (in_place ? 1.0 : 2.0) * L::Q * double(cells) * sizeof(Real);
-  const double share = in_place ? kPlainStoresInPlaceUpToCacheShare : kPlainStoresUpToCacheShare;
-  return cache <= 0 || bytes > share * double(cache);
+  const double bytes = 2.0 * L::Q * double(cells) * sizeof(Real);
+  return cache <= 0 || bytes > kPlainStoresUpToCacheShare * double(cache);
 }
 
 using RunKernel = void (*)(const Real* const*, Real* const*, const std::uint8_t*, const Run&,
@@ -267,7 +265,7 @@ void collide_stream(const CollideStreamArgs& a) {
   const bool forced = a.force[0] != 0.0 || a.force[1] != 0.0 || a.force[2] != 0.0;
   using Stores = CollideStreamArgs::Stores;
   const bool streaming = a.stores == Stores::kStreaming ||
-                         (a.stores == Stores::kByCacheSize && output_exceeds_cache(n, a.in_place));
+                         (a.stores == Stores::kByCacheSize && !a.in_place && output_exceeds_cache(n));
   // The run kernel of the options, chosen once (no option is looked up per cell).
   const auto run = streaming ? run_kernel<kChunkStreaming>(a.incompressible, forced)
                              : run_kernel<kChunkPlain>(a.incompressible, forced);
