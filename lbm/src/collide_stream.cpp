@@ -54,22 +54,22 @@ using L = D3Q19;
 // nodes. A chunk reads all its nodes' inputs before it writes any output.
 //
 // A run is processed in chunks of kChunk nodes: the populations are pulled straight from
-// the source array, collided, and the results gathered in a small L1/L2-resident SoA buffer
-// (19 contiguous streams) that is written out, with streaming stores where the arrays are
-// larger than the cache (no write-allocate: 2 x 19 values moved per update, not 3 x 19),
-// with plain ones where the cache holds them. Splitting the arithmetic from the stores
-// lets the compiler vectorise it across the chunk's nodes: it reads the node types as a
-// double mask, since GCC does not vectorise a loop that mixes byte and double lanes.
-// With streaming stores, the tail of a chunk's output that does not fill a cache line is
-// held back and stored with the next chunk's head (streaming_store_keep_tail), so inside
-// a run every line of every population is one vector store.
-// The chunk length depends on where the output goes. Streamed to memory, longer bursts per
-// population pay: the memory serves 38 streams (19 pulled, 19 written) far below its
-// one-stream copy bandwidth, and less so the longer each write burst (session 7, 2-core
-// AMD EPYC KVM guest, 32 MiB L3: 128^3 on one thread 56 -> 86-90 MLUPS from 128 to 320
-// nodes, the paper's rank block of 90 x 20 x 40 on two concurrent processes 50 -> 64-69;
-// 512 and more fall back). Into the cache, the short buffer that stays in L1 is faster
-// (32^3 on one thread: 117 MLUPS at 128, 107 at 320). README "Measured figures".
+// the source array and collided. With plain stores (always in place, and for two arrays
+// the cache holds) the results go straight into the destination. With streaming stores
+// (two arrays larger than the cache: no write-allocate, 2 x 19 values moved per update, not
+// 3 x 19) they are gathered in a small L1/L2-resident SoA buffer (19 contiguous streams)
+// and written out from it: the tail of a chunk's output that does not fill a cache line is
+// held back and stored with the next chunk's head (streaming_store_keep_tail), so inside a
+// run every line of every population is one vector store. The arithmetic is vectorised
+// across the chunk's nodes: it reads the node types as a double mask, since GCC does not
+// vectorise a loop that mixes byte and double lanes.
+// The chunk length depends on the stores. Streamed to memory, longer bursts per population
+// pay: the memory serves 38 streams (19 pulled, 19 written) far below its one-stream copy
+// bandwidth, and less so the longer each write burst (session 7, 2-core AMD EPYC KVM
+// guest, 32 MiB L3: 128^3 on one thread 56 -> 86-90 MLUPS from 128 to 320 nodes, the
+// paper's rank block of 90 x 20 x 40 on two concurrent processes 50 -> 64-69; 512 and more
+// fall back). With plain stores 128 (session 9, in place: 256 and 512 no faster at 64^3,
+// 128^3 or on the paper's rank block, 2 interleaved rounds). README "Measured figures".
 constexpr int kChunkStreaming = 320;
 constexpr int kChunkPlain = 128;
 // Room for the held-back tail before a chunk's values: less than a line.
@@ -126,7 +126,9 @@ void collide_stream_run(const Real* const* src, Real* const* dst,
   using Out = std::conditional_t<streaming, double, Real>;
   const double source_even = 1.0 - 0.5 * omega_plus;
   const double source_odd = 1.0 - 0.5 * omega_minus;
-  alignas(64) double f[L::Q][kHeldBack + kChunk];
+  // The streaming stores' buffer (plain stores write straight into dst).
+  constexpr int kBuffer = streaming ? kHeldBack + kChunk : 1;
+  alignas(64) double f[L::Q][kBuffer];
   alignas(64) double fluid_mask[kChunk];
   int held[L::Q] = {};  // values of each population held back at the head of f[q]
   for (int start = 0; start < run.length; start += kChunk) {
