@@ -44,6 +44,27 @@ double measure_copy_bandwidth(int threads, CopyStores stores, std::size_t bytes_
   return best;
 }
 
+double measure_update_bandwidth(int threads, std::size_t bytes_per_array) {
+  const std::size_t n = bytes_per_array / sizeof(double);
+  std::vector<double, lbm::HugePageAllocator<double>> a(n);
+#pragma omp parallel for num_threads(threads) schedule(static)
+  for (std::size_t i = 0; i < n; ++i) a[i] = 1.0;
+  double best = 0.0;
+  for (int repeat = 0; repeat < 5; ++repeat) {
+    const auto start = std::chrono::steady_clock::now();
+    // The values stay near 1 (the update's fixed point), whatever the number of repeats.
+#pragma omp parallel for num_threads(threads) schedule(static)
+    for (std::size_t i = 0; i < n; ++i) a[i] = 0.999 * a[i] + 0.001;
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    best = std::max(best, 2.0 * n * sizeof(double) / seconds);
+  }
+  // Read back one value, so that the loops cannot be dropped as dead stores.
+  volatile double sink = a[n / 2];
+  (void)sink;
+  return best;
+}
+
 double measure_multi_array_copy_bandwidth(int threads, int arrays, std::size_t values_per_array,
                                           std::size_t burst) {
   const std::size_t n = values_per_array;

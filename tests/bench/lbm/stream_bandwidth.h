@@ -10,6 +10,12 @@ enum class CopyStores { kPlain, kStreaming };
 double measure_copy_bandwidth(int threads, CopyStores stores,
                               std::size_t bytes_per_array = std::size_t(1) << 28);
 
+// One array read and written back in place, a[i] = s a[i] + t (bytes counted: one read and
+// one write per element, and that is what moves: the stores hit lines just read, so there
+// is no write-allocate). The access of the in-place (AA pattern) kernel, one array instead
+// of its 19.
+double measure_update_bandwidth(int threads, std::size_t bytes_per_array = std::size_t(1) << 28);
+
 // The same copy over `arrays` source arrays into as many destination arrays of
 // `values_per_array` doubles each, with streaming stores, array after array in bursts of
 // `burst` values (the most favourable order for the memory: one stream at a time, long
