@@ -14,6 +14,9 @@
 namespace lbm {
 
 namespace {
+// Below this many static wall links one thread copies them faster than two start.
+constexpr std::size_t kMinParallelWallLinks = 4096;
+
 void validate(const VoxelGeometry& geometry, const FlowDrive& drive, const Decomposition& d) {
   for (int a = 0; a < 3; ++a)
     if (d.global.lo[a] != 0 || d.global.hi[a] != geometry.dims()[a])
@@ -186,7 +189,11 @@ void FluidSolver::apply_wall_bounce_back() {
   const std::vector<std::size_t>& slot = wall_slot_[int(f_.placement())];
   const std::vector<std::size_t>& source = wall_source_[int(f_.placement())];
   const std::size_t links = slot.size();
-  for (std::size_t l = 0; l < links; ++l) data[slot[l]] = data[source[l]];
+  // Each link copies a fluid node's outgoing population into a slot of a wall node, which
+  // no link reads: any split over the threads gives the same field.
+  const long n = long(links);
+#pragma omp parallel for schedule(static) if (links >= kMinParallelWallLinks)
+  for (long l = 0; l < n; ++l) data[slot[std::size_t(l)]] = data[source[std::size_t(l)]];
 }
 
 void FluidSolver::apply_open_boundaries() {

@@ -17,6 +17,9 @@ constexpr int kTagBase = 0x4c42;
 int tag_up(int axis) { return kTagBase + 2 * axis; }
 int tag_down(int axis) { return kTagBase + 2 * axis + 1; }
 
+// Below this many values the periodic ghost copies stay on one thread.
+constexpr std::size_t kMinParallelCopy = 16384;
+
 // The two axes other than `axis`, in increasing order; for the y and z sweeps the inner
 // one is x, so packing walks memory contiguously.
 std::array<int, 2> other_axes(int axis) {
@@ -136,15 +139,21 @@ void HaloExchange::sweep(int axis, T* const* up, int num_up, T* const* down, int
     // Distance between a ghost plane and the owned plane it copies.
     const std::ptrdiff_t shift =
         std::ptrdiff_t(n) * layout_.offset(axis == 0, axis == 1, axis == 2);
-    for (int m = 0; m < num_up; ++m) {
-      T* f = up[m];
-      for_plane(layout_, axis, -1,
-                [&](std::size_t, std::size_t ghost) { f[ghost] = f[ghost + shift]; });
-    }
-    for (int m = 0; m < num_down; ++m) {
-      T* f = down[m];
-      for_plane(layout_, axis, n,
-                [&](std::size_t, std::size_t ghost) { f[ghost] = f[ghost - shift]; });
+    // Plain copies from owned planes into ghost planes: the arrays may go to any thread.
+    const auto [b, c] = other_axes(axis);
+    const bool split = std::size_t(layout_.padded(b)) * layout_.padded(c) * (num_up + num_down) >=
+                       kMinParallelCopy;
+#pragma omp parallel for schedule(static) if (split)
+    for (int m = 0; m < num_up + num_down; ++m) {
+      if (m < num_up) {
+        T* f = up[m];
+        for_plane(layout_, axis, -1,
+                  [&](std::size_t, std::size_t ghost) { f[ghost] = f[ghost + shift]; });
+      } else {
+        T* f = down[m - num_up];
+        for_plane(layout_, axis, n,
+                  [&](std::size_t, std::size_t ghost) { f[ghost] = f[ghost - shift]; });
+      }
     }
     return;
   }

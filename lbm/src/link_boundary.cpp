@@ -18,15 +18,6 @@ namespace {
 // Below this many links per thread the start of a parallel region costs more than it saves.
 constexpr std::size_t kMinLinksPerThread = 256;
 
-int link_threads(std::size_t num_links) {
-#ifdef _OPENMP
-  return std::max(1, std::min(omp_get_max_threads(), int(num_links / kMinLinksPerThread)));
-#else
-  (void)num_links;
-  return 1;
-#endif
-}
-
 // Bounce-back or Bouzidi.
 void apply_without_moments(const std::vector<BoundaryLink>& links, MovingWallScheme scheme,
                            double rho0, const BlockLayout& layout,
@@ -50,6 +41,15 @@ void apply_without_moments(const std::vector<BoundaryLink>& links, MovingWallSch
       " scheme needs the solver's tau and body force; pass the FluidSolver");
 }
 }  // namespace
+
+int link_threads(std::size_t num_links) {
+#ifdef _OPENMP
+  return std::max(1, std::min(omp_get_max_threads(), int(num_links / kMinLinksPerThread)));
+#else
+  (void)num_links;
+  return 1;
+#endif
+}
 
 void apply_links(const std::vector<BoundaryLink>& links, MovingWallScheme scheme,
                  FluidSolver& solver, moving_wall::MomentCache* cache,

@@ -15,6 +15,13 @@ void for_face_nodes(const OpenFace& face, const BlockLayout& layout,
                     const std::vector<std::uint8_t>& node_type, Visit visit, Ahead ahead) {
   detail::for_plane_fluid_nodes(layout, node_type, face.axis, face.local_plane, visit, ahead);
 }
+// The same split over the OpenMP threads: for apply_face, whose node reads and writes only
+// the slots it pulls.
+template <typename Visit, typename Ahead>
+void for_face_nodes_in_parallel(const OpenFace& face, const BlockLayout& layout,
+                                const std::vector<std::uint8_t>& node_type, Visit visit, Ahead ahead) {
+  detail::for_plane_fluid_nodes_in_parallel(layout, node_type, face.axis, face.local_plane, visit, ahead);
+}
 
 // One face, its axis and inward direction known at compile time: the q loops unroll and
 // every test of c_q along the normal folds away (the same sums in the same order as the
@@ -36,7 +43,8 @@ void apply_face(const OpenFace& face, const BlockLayout& layout,
   // The lines of the node a few places ahead are asked for while this one is computed: on
   // an x-normal face each is a line of its own, just streamed to memory by the kernel.
   const auto prefetch = [&](std::size_t ahead) { detail::prefetch_pulled(f, ahead, off); };
-  for_face_nodes(face, layout, node_type, [&](std::size_t cell) {
+  // A node reads and writes only the slots it pulls: the nodes may go to any thread.
+  for_face_nodes_in_parallel(face, layout, node_type, [&](std::size_t cell) {
     // Populations after streaming: f_q(x) = f*_q(x - c_q).
     double post[L::Q];
 #pragma GCC unroll 19

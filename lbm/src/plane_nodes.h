@@ -9,6 +9,10 @@
 #include <cstdint>
 #include <vector>
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 #include "lbm/block_layout.h"
 #include "lbm/d3q19.h"
 #include "lbm/node_type.h"
@@ -18,25 +22,54 @@ namespace lbm::detail {
 
 constexpr int kPlaneAhead = 4;
 
-// visit(cell) for every fluid node of local plane `plane` normal to `axis`, the other two
-// axes over the owned extent, the second tangential axis outermost (sums over a plane add
-// in this order); ahead(cell) first for the node kPlaneAhead places further along the row.
+// visit(cell) for every fluid node of rows [first_row, last_row) of local plane `plane`
+// normal to `axis`: a row runs along the first tangential axis, rows along the second;
+// ahead(cell) first for the node kPlaneAhead places further along the row.
 template <typename Visit, typename Ahead>
-void for_plane_fluid_nodes(const BlockLayout& layout, const std::vector<std::uint8_t>& node_type,
-                           int axis, int plane, Visit visit, Ahead ahead) {
+void for_plane_rows(const BlockLayout& layout, const std::vector<std::uint8_t>& node_type,
+                    int axis, int plane, int first_row, int last_row, Visit& visit, Ahead& ahead) {
   const int t1 = (axis + 1) % 3, t2 = (axis + 2) % 3;  // tangential axes
   int ijk[3] = {0, 0, 0};
   ijk[axis] = plane;
   const std::size_t origin = layout.cell(ijk[0], ijk[1], ijk[2]);
   const std::ptrdiff_t step1 = layout.offset(t1 == 0, t1 == 1, t1 == 2);
   const std::ptrdiff_t step2 = layout.offset(t2 == 0, t2 == 1, t2 == 2);
-  const int n1 = layout.size(t1), n2 = layout.size(t2);
-  for (int s2 = 0; s2 < n2; ++s2)
+  const int n1 = layout.size(t1);
+  for (int s2 = first_row; s2 < last_row; ++s2)
     for (int s1 = 0; s1 < n1; ++s1) {
       const std::size_t cell = origin + s2 * step2 + s1 * step1;
       if (s1 + kPlaneAhead < n1) ahead(cell + kPlaneAhead * step1);
       if (node_type[cell] == kFluid) visit(cell);
     }
+}
+
+// Every fluid node of the plane, the first tangential axis innermost (sums over a plane add
+// in this order).
+template <typename Visit, typename Ahead>
+void for_plane_fluid_nodes(const BlockLayout& layout, const std::vector<std::uint8_t>& node_type,
+                           int axis, int plane, Visit visit, Ahead ahead) {
+  for_plane_rows(layout, node_type, axis, plane, 0, layout.size((axis + 2) % 3), visit, ahead);
+}
+
+// The same split over the OpenMP threads by rows, for a visit that reads and writes only
+// slots of its own node (then the order of the visits changes no bit). Planes of fewer than
+// kMinParallelPlaneNodes nodes stay on one thread.
+constexpr int kMinParallelPlaneNodes = 512;
+template <typename Visit, typename Ahead>
+void for_plane_fluid_nodes_in_parallel(const BlockLayout& layout,
+                                       const std::vector<std::uint8_t>& node_type, int axis,
+                                       int plane, Visit visit, Ahead ahead) {
+  const int rows = layout.size((axis + 2) % 3);
+  const bool split = rows * layout.size((axis + 1) % 3) >= kMinParallelPlaneNodes;
+#pragma omp parallel if (split)
+  {
+#ifdef _OPENMP
+    const int t = omp_get_thread_num(), nt = omp_get_num_threads();
+#else
+    const int t = 0, nt = 1;
+#endif
+    for_plane_rows(layout, node_type, axis, plane, rows * t / nt, rows * (t + 1) / nt, visit, ahead);
+  }
 }
 
 // The 19 populations of `cell`.

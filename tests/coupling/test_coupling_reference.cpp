@@ -201,11 +201,16 @@ TEST(CouplingReference, TwoThreadsGiveTheOneThreadStepBitForBit) {
 }
 
 // The sweep that interleaves the moving walls with the link mass correction
-// (lbm/moving_wall/link_sweep.h) against the three stages one after the other, on one thread.
+// (lbm/moving_wall/link_sweep.h) against the three stages one after the other on one thread,
+// the sweep itself on 1 to 4 threads: with 2 each thread's range has blocks it corrects at
+// once and blocks it leaves to the barrier, with 4 (about 17 blocks each, the lag 13) few or
+// none are corrected at once.
 TEST(CouplingReference, LinkSweepGivesTheSeparateStagesBitForBit) {
 #ifdef _OPENMP
   const int before = omp_get_max_threads();
-  omp_set_num_threads(1);
+  const int max_threads = 4;
+#else
+  const int max_threads = 1;
 #endif
   for (auto scheme : {lbm::MovingWallScheme::kMeiLuoShyy, lbm::MovingWallScheme::kBouzidi,
                       lbm::MovingWallScheme::kBounceBack}) {
@@ -219,9 +224,12 @@ TEST(CouplingReference, LinkSweepGivesTheSeparateStagesBitForBit) {
     const lbm::PopulationField::Storage start = f.raw();
     const double rho0 = solver->parameters().rho0;
 
+#ifdef _OPENMP
+    omp_set_num_threads(1);
+#endif
     lbm::moving_wall::MomentCache cache;
-    std::vector<lbm::LinkPopulations> stages_populations, sweep_populations;
-    std::vector<double> stages_defects, sweep_defects;
+    std::vector<lbm::LinkPopulations> stages_populations;
+    std::vector<double> stages_defects;
     lbm::apply_links(links.links, scheme, *solver, &cache, nullptr, &stages_populations);
     const auto stages = lbm::moving_wall::link_mass_defect(links.links, rho0, stages_populations,
                                                            &stages_defects);
@@ -229,22 +237,60 @@ TEST(CouplingReference, LinkSweepGivesTheSeparateStagesBitForBit) {
                                         stages_defects, f);
     const lbm::PopulationField::Storage after_stages = f.raw();
 
-    f.raw() = start;
-    lbm::moving_wall::LinkSweep order;
-    const auto swept = lbm::moving_wall::apply_links_and_restore_mass(
-        links.links, scheme, *solver, cache, order, sweep_populations, sweep_defects);
-    ASSERT_GT(order.lag(), 1u);
-    EXPECT_TRUE(same_bits(after_stages.data(), f.raw().data(), start.size() * sizeof(lbm::Real)))
-        << lbm::moving_wall::label(scheme);
-    ASSERT_EQ(stages_defects.size(), sweep_defects.size());
-    EXPECT_TRUE(same_bits(stages_defects.data(), sweep_defects.data(), stages_defects.size() * sizeof(double)));
-    EXPECT_TRUE(same_bits(stages_populations.data(), sweep_populations.data(),
-                          stages_populations.size() * sizeof(lbm::LinkPopulations)));
-    EXPECT_TRUE(same_bits(&stages.net, &swept.net, sizeof(double)));
-    EXPECT_TRUE(same_bits(&stages.absolute, &swept.absolute, sizeof(double)));
-    EXPECT_NE(stages.absolute, 0.0);
+    for (int threads = 1; threads <= max_threads; ++threads) {
+#ifdef _OPENMP
+      omp_set_num_threads(threads);
+#endif
+      ASSERT_GE(links.links.size(), 256u * std::size_t(threads));  // lbm::link_threads splits them
+      f.raw() = start;
+      std::vector<lbm::LinkPopulations> sweep_populations;
+      std::vector<double> sweep_defects;
+      lbm::moving_wall::LinkSweep order;
+      const auto swept = lbm::moving_wall::apply_links_and_restore_mass(
+          links.links, scheme, *solver, cache, order, sweep_populations, sweep_defects);
+      ASSERT_GT(order.lag(), 1u);
+      const std::string what = std::string(lbm::moving_wall::label(scheme)) + ", " +
+                               std::to_string(threads) + " threads";
+      EXPECT_TRUE(same_bits(after_stages.data(), f.raw().data(), start.size() * sizeof(lbm::Real))) << what;
+      ASSERT_EQ(stages_defects.size(), sweep_defects.size());
+      EXPECT_TRUE(same_bits(stages_defects.data(), sweep_defects.data(), stages_defects.size() * sizeof(double)))
+          << what;
+      EXPECT_TRUE(same_bits(stages_populations.data(), sweep_populations.data(),
+                            stages_populations.size() * sizeof(lbm::LinkPopulations)))
+          << what;
+      EXPECT_TRUE(same_bits(&stages.net, &swept.net, sizeof(double))) << what;
+      EXPECT_TRUE(same_bits(&stages.absolute, &swept.absolute, sizeof(double))) << what;
+      EXPECT_NE(stages.absolute, 0.0);
+    }
   }
 #ifdef _OPENMP
   omp_set_num_threads(before);
 #endif
+}
+
+// The sweep's ranges: whole blocks, in order, covering every block, each holding about its
+// share of the links.
+TEST(CouplingReference, LinkSweepSharesCoverEveryBlockOnce) {
+  auto solver = solver_with_a_wall();
+  const ParticleSet p = crowded_spheres();
+  SphereCoupling coupling(*solver);
+  coupling.map_and_refill(p.view(true));
+  SphereLinks links;
+  build_sphere_links(coupling.mapping(), p.view(true), solver->node_types(), links);
+  lbm::moving_wall::LinkSweep order;
+  order.sort(links.links, solver->layout());
+  const std::size_t n = links.links.size();
+  for (int shares = 1; shares <= 5; ++shares) {
+    EXPECT_EQ(order.block_of_share(0, shares), 0u);
+    EXPECT_EQ(order.block_of_share(shares, shares), order.num_blocks());
+    for (int t = 0; t < shares; ++t) {
+      const std::size_t first = order.block_of_share(t, shares), last = order.block_of_share(t + 1, shares);
+      ASSERT_LE(first, last);
+      const auto held = std::size_t(order.end(last == first ? first : last - 1) - order.begin(first));
+      const std::size_t linked = last == first ? 0 : held;
+      // A range ends at a block boundary: at most one block's links (64 cells, at most
+      // 18 links each) from its share.
+      EXPECT_NEAR(double(linked), double(n) / shares, 64.0 * 18.0) << t << " of " << shares;
+    }
+  }
 }

@@ -75,9 +75,6 @@ std::size_t particle_boundary(const SphereLinks& sl, std::size_t l) {
   return l;
 }
 
-// Below this many links per thread the start of a parallel region costs more than it saves.
-constexpr std::size_t kMinLinksPerThread = 256;
-
 template <bool kGalilean>
 void sum_all_links(const SphereLinks& sl, const std::vector<lbm::LinkPopulations>& populations,
                    double rho0, HydrodynamicLoads& loads) {
@@ -86,8 +83,7 @@ void sum_all_links(const SphereLinks& sl, const std::vector<lbm::LinkPopulations
 #ifdef _OPENMP
   // Split only links in particle order (build_sphere_links'), so that each particle's links
   // fall to one thread.
-  if (std::is_sorted(sl.particle.begin(), sl.particle.end()))
-    threads = std::max(1, std::min(omp_get_max_threads(), int(n / kMinLinksPerThread)));
+  if (std::is_sorted(sl.particle.begin(), sl.particle.end())) threads = lbm::link_threads(n);
 #endif
   if (threads <= 1) {
     sum_links<kGalilean>(sl, populations, 0, n, rho0, loads);

@@ -26,6 +26,10 @@ struct BoundaryLink {
   std::array<double, 3> wall_velocity{0.0, 0.0, 0.0};
 };
 
+// How many OpenMP threads a stage over `num_links` links uses: the available ones, but at
+// least 256 links each (below that, starting a parallel region costs more than it saves).
+int link_threads(std::size_t num_links);
+
 // Writes, for every link, the population f_{-q}(x, t+1) into the slot it is pulled from
 // (direction -q at node x + c_q, a non-fluid node), from the post-collision state f*(t), with
 // the scheme chosen once for all links (moving_wall::apply). If `momentum` is non-null it

@@ -18,6 +18,6 @@ template void apply<BounceBack>(const std::vector<BoundaryLink>&, const BounceBa
 
 template void sweep<BounceBack>(const std::vector<BoundaryLink>&, const LinkSweep&, const BounceBack&,
                                 const BlockLayout&, double, const LinkMassRestorer&, PopulationField&,
-                                std::vector<LinkPopulations>&, std::vector<double>&);
+                                std::vector<LinkPopulations>&, std::vector<double>&, int);
 
 }  // namespace lbm::moving_wall

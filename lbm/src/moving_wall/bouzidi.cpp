@@ -24,6 +24,6 @@ template void apply<Bouzidi>(const std::vector<BoundaryLink>&, const Bouzidi&, c
 
 template void sweep<Bouzidi>(const std::vector<BoundaryLink>&, const LinkSweep&, const Bouzidi&,
                              const BlockLayout&, double, const LinkMassRestorer&, PopulationField&,
-                             std::vector<LinkPopulations>&, std::vector<double>&);
+                             std::vector<LinkPopulations>&, std::vector<double>&, int);
 
 }  // namespace lbm::moving_wall

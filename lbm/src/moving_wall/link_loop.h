@@ -74,13 +74,43 @@ void apply_range(const std::vector<BoundaryLink>& links, std::size_t first, std:
                populations ? &(*populations)[l] : nullptr);
 }
 
-// moving_wall::sweep (link_sweep.h): block b's links through the scheme, their defects
-// measured, then the correction of block b - lag, whose cells no link still to come reads.
+// Blocks [first, last) of moving_wall::sweep (link_sweep.h) on one thread: block b's links
+// through the scheme, their defects measured, then the correction of block b - lag, whose
+// cells no link still to come reads; only blocks in [safe_first, safe_last) are corrected
+// here, the others by sweep's second phase.
+template <class Scheme>
+void sweep_blocks(const BoundaryLink* link, const LinkSweep& order, const Scheme& scheme,
+                  const DirectionOffsets& offsets, const LinkSlots& slots, double rho0,
+                  const LinkMassRestorer& restorer, PopulationField& f, LinkPopulations* pops,
+                  double* defect, std::size_t first, std::size_t last, std::size_t safe_first,
+                  std::size_t safe_last) {
+  const std::size_t lag = order.lag();
+  for (std::size_t b = first; b < last + lag; ++b) {
+    if (b < last)
+      for (const std::uint32_t *l = order.begin(b), *end = order.end(b); l != end; ++l) {
+        apply_link(link[*l], scheme, offsets, slots, f, nullptr, &pops[*l]);
+        defect[*l] = link_defect(link[*l], rho0, pops[*l]);
+      }
+    if (b < first + lag) continue;
+    const std::size_t c = b - lag;
+    if (c >= safe_first && c < safe_last)
+      for (const std::uint32_t *l = order.begin(c), *end = order.end(c); l != end; ++l)
+        restorer.remove(link[*l].fluid_cell, defect[*l]);
+  }
+}
+
+// moving_wall::sweep (link_sweep.h). On one thread sweep_blocks over every block. On more,
+// thread t takes the t-th contiguous range of blocks holding n/T of the links, and corrects at
+// once only the blocks at least `lag` blocks inside its range: no other thread's links read
+// their cells, nor do the thread's own links after them (as on one thread). The blocks within
+// `lag` of a range's inner ends are corrected after a barrier, once every link has been read.
+// A correction writes only the slots its node pulls, so the order of blocks does not change
+// a bit: the result is the one-thread sweep's for any number of threads.
 template <class Scheme>
 void sweep(const std::vector<BoundaryLink>& links, const LinkSweep& order, const Scheme& scheme,
            const BlockLayout& layout, double rho0, const LinkMassRestorer& restorer,
            PopulationField& f, std::vector<LinkPopulations>& populations,
-           std::vector<double>& per_link) {
+           std::vector<double>& per_link, int threads) {
   populations.resize(links.size());
   per_link.resize(links.size());
   const DirectionOffsets offsets(layout);
@@ -91,15 +121,30 @@ void sweep(const std::vector<BoundaryLink>& links, const LinkSweep& order, const
   LinkPopulations* const pops = populations.data();
   double* const defect = per_link.data();
   const std::size_t blocks = order.num_blocks(), lag = order.lag();
-  for (std::size_t b = 0; b < blocks + lag; ++b) {
-    if (b < blocks)
-      for (const std::uint32_t *l = order.begin(b), *end = order.end(b); l != end; ++l) {
-        apply_link(link[*l], scheme, offsets, slots, f, nullptr, &pops[*l]);
-        defect[*l] = link_defect(link[*l], rho0, pops[*l]);
-      }
-    if (b >= lag)
-      for (const std::uint32_t *l = order.begin(b - lag), *end = order.end(b - lag); l != end; ++l)
+  if (threads <= 1) {
+    sweep_blocks(link, order, scheme, offsets, slots, rho0, restorer, f, pops, defect, 0, blocks,
+                 0, blocks);
+    return;
+  }
+#pragma omp parallel num_threads(threads)
+  {
+#ifdef _OPENMP
+    const int t = omp_get_thread_num(), nt = omp_get_num_threads();
+#else
+    const int t = 0, nt = 1;
+#endif
+    const std::size_t first = order.block_of_share(t, nt), last = order.block_of_share(t + 1, nt);
+    // The outer ends of the first and last ranges border no other thread.
+    const std::size_t safe_first = t == 0 ? first : first + lag;
+    const std::size_t safe_last = t + 1 == nt ? last : (last > lag ? last - lag : 0);
+    sweep_blocks(link, order, for_thread(scheme, t), offsets, slots, rho0, restorer, f, pops,
+                 defect, first, last, safe_first, safe_last);
+#pragma omp barrier
+    for (std::size_t c = first; c < last; ++c) {
+      if (c >= safe_first && c < safe_last) continue;
+      for (const std::uint32_t *l = order.begin(c), *end = order.end(c); l != end; ++l)
         restorer.remove(link[*l].fluid_cell, defect[*l]);
+    }
   }
 }
 

@@ -3,11 +3,8 @@
 #include <algorithm>
 #include <cstdlib>
 
-#ifdef _OPENMP
-#include <omp.h>
-#endif
-
 #include "lbm/fluid_solver.h"
+#include "lbm/link_boundary.h"
 #include "lbm/moving_wall/bounce_back.h"
 #include "lbm/moving_wall/bouzidi.h"
 #include "lbm/moving_wall/mei_luo_shyy.h"
@@ -32,6 +29,16 @@ void LinkSweep::sort(const std::vector<BoundaryLink>& links, const BlockLayout& 
   lag_ = 2 * blocks_apart + 1;
 }
 
+std::size_t LinkSweep::block_of_share(int t, int shares) const {
+  const std::size_t blocks = num_blocks();
+  if (t <= 0 || blocks == 0) return 0;
+  if (t >= shares) return blocks;
+  const std::size_t target = std::size_t(begin_[blocks]) * std::size_t(t) / std::size_t(shares);
+  // The first block whose links start at or after the target link.
+  return std::size_t(std::lower_bound(begin_.begin(), begin_.begin() + long(blocks), std::uint32_t(target)) -
+                     begin_.begin());
+}
+
 LinkMassDefect apply_links_and_restore_mass(const std::vector<BoundaryLink>& links,
                                             MovingWallScheme scheme, FluidSolver& solver,
                                             MomentCache& cache, LinkSweep& order,
@@ -40,29 +47,22 @@ LinkMassDefect apply_links_and_restore_mass(const std::vector<BoundaryLink>& lin
   const double rho0 = solver.parameters().rho0;
   const BlockLayout& layout = solver.layout();
   PopulationField& f = solver.populations();
-#ifdef _OPENMP
-  if (omp_get_max_threads() > 1) {
-    apply_links(links, scheme, solver, &cache, nullptr, &populations);
-    const LinkMassDefect total = link_mass_defect(links, rho0, populations, &per_link);
-    restore_link_mass(links, layout, solver.node_types(), per_link, f);
-    return total;
-  }
-#endif
+  const int threads = link_threads(links.size());
   order.sort(links, layout);
   const LinkMassRestorer restorer(layout, solver.node_types(), f);
   switch (scheme) {
     case MovingWallScheme::kBounceBack:
-      sweep(links, order, BounceBack{rho0}, layout, rho0, restorer, f, populations, per_link);
+      sweep(links, order, BounceBack{rho0}, layout, rho0, restorer, f, populations, per_link, threads);
       break;
     case MovingWallScheme::kBouzidi:
       sweep(links, order, Bouzidi{rho0, &solver.node_types()}, layout, rho0, restorer, f,
-            populations, per_link);
+            populations, per_link, threads);
       break;
     case MovingWallScheme::kMeiLuoShyy: {
-      cache.begin(layout.num_cells());
+      cache.begin(layout.num_cells(), threads);
       const MeiLuoShyy mls{rho0, 1.0 / solver.trt().omega_plus, solver.parameters().body_force,
                            &solver.node_types(), &cache};
-      sweep(links, order, mls, layout, rho0, restorer, f, populations, per_link);
+      sweep(links, order, mls, layout, rho0, restorer, f, populations, per_link, threads);
       break;
     }
   }

@@ -42,6 +42,6 @@ template void apply<MeiLuoShyy>(const std::vector<BoundaryLink>&, const MeiLuoSh
 
 template void sweep<MeiLuoShyy>(const std::vector<BoundaryLink>&, const LinkSweep&, const MeiLuoShyy&,
                                 const BlockLayout&, double, const LinkMassRestorer&, PopulationField&,
-                                std::vector<LinkPopulations>&, std::vector<double>&);
+                                std::vector<LinkPopulations>&, std::vector<double>&, int);
 
 }  // namespace lbm::moving_wall

@@ -39,6 +39,10 @@ class LinkSweep {
   std::size_t lag() const { return lag_; }
   const std::uint32_t* begin(std::size_t block) const { return ids_.data() + begin_[block]; }
   const std::uint32_t* end(std::size_t block) const { return ids_.data() + begin_[block + 1]; }
+  // The first block of share t of `shares` (0 <= t <= shares): the blocks [block_of_share(t),
+  // block_of_share(t + 1)) hold about 1/shares of the links, whole blocks; share `shares`
+  // starts at num_blocks().
+  std::size_t block_of_share(int t, int shares) const;
 
  private:
   std::vector<std::uint32_t> begin_, next_, ids_;
@@ -51,12 +55,12 @@ template <class Scheme>
 void sweep(const std::vector<BoundaryLink>& links, const LinkSweep& order, const Scheme& scheme,
            const BlockLayout& layout, double rho0, const LinkMassRestorer& restorer,
            PopulationField& f, std::vector<LinkPopulations>& populations,
-           std::vector<double>& per_link);
+           std::vector<double>& per_link, int threads);
 
 // apply_links(links, scheme, solver, cache, nullptr, populations), then the link mass defect
-// (returned, and per link in `per_link`) and restore_link_mass, as one sweep on one thread;
-// with more OpenMP threads the three stages one after the other (the moving walls split
-// over the threads). The same result either way.
+// (returned, and per link in `per_link`) and restore_link_mass, as one sweep, split over the
+// OpenMP threads by ranges of blocks (sweep in link_loop.h). The same result for any number
+// of threads.
 LinkMassDefect apply_links_and_restore_mass(const std::vector<BoundaryLink>& links,
                                             MovingWallScheme scheme, FluidSolver& solver,
                                             MomentCache& cache, LinkSweep& order,
