@@ -88,6 +88,16 @@ void append_links(const SphereMapping& mapping, const ParticleView& particles,
     }
   }
 }
+// The first sphere of share t of nt, the spheres split by their surface cells (the work of
+// their links: spheres differ in size, and in how much of them a rank owns); n for t = nt.
+std::size_t sphere_of_share(const SphereMapping& mapping, std::size_t n, std::size_t t, std::size_t nt) {
+  if (t >= nt) return n;
+  const std::size_t* const base = mapping.surface_cells(0).first;
+  const std::size_t target = std::size_t(mapping.surface_cells(n - 1).last - base) * t / nt;
+  std::size_t p = 0;
+  while (p < n && std::size_t(mapping.surface_cells(p).first - base) < target) ++p;
+  return p;
+}
 }  // namespace
 
 void build_sphere_links(const SphereMapping& mapping, const ParticleView& view,
@@ -103,8 +113,9 @@ void build_sphere_links(const SphereMapping& mapping, const ParticleView& view,
     append_links(mapping, view, node_type, 0, n, out);
     return;
   }
-  // Thread t takes the t-th contiguous block of spheres into its own list; the lists are
-  // joined in thread order, i.e. in particle order: the same links as one thread's.
+  // Thread t takes the t-th contiguous block of spheres (by surface cells) into its own list;
+  // the lists are joined in thread order, i.e. in particle order: the same links as one
+  // thread's.
   scratch->resize(std::size_t(threads));
 #pragma omp parallel num_threads(threads)
   {
@@ -116,7 +127,8 @@ void build_sphere_links(const SphereMapping& mapping, const ParticleView& view,
 #endif
     SphereLinks& part = (*scratch)[t];
     part.clear();
-    append_links(mapping, view, node_type, n * t / nt, n * (t + 1) / nt, part);
+    append_links(mapping, view, node_type, sphere_of_share(mapping, n, t, nt),
+                 sphere_of_share(mapping, n, t + 1, nt), part);
   }
   for (const SphereLinks& part : *scratch) out.append(part);
 }

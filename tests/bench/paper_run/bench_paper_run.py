@@ -12,12 +12,16 @@ the run with particles:
   fix lbm/pore: N fluid steps in T s: ... ; S s per fluid step
 The ranks split the lattice across the flow (in.pore's -var procs "1 * 1": both ranks hold
 half of every region, so both share the coupling of the particles arriving at the inlet);
-_along_flow is in.pore's default grid ("* 1 1", the inlet's rank does the coupling alone).
+_along_flow is in.pore's default grid ("* 1 1", the inlet's rank does the coupling alone);
+_one_rank_two_threads is one rank with two OpenMP threads (the whole lattice on one rank: no
+halo messages, no rank waiting for the other's particles, the coupling stages split over the
+threads; the DEM runs on one thread).
 The drivers given (--driver for the double-precision build, --single-driver for a
 -DLBM_PORE_SINGLE_PRECISION=ON build) run --repeat times, interleaved (double, double along the
 flow, single, double, ...), so that a shared machine's load swings fall on all. Prints the
 median and min-max:
-  BENCH paper_run_fluid_step_s[_along_flow|_single], BENCH paper_run_particles[...],
+  BENCH paper_run_fluid_step_s[_along_flow|_one_rank_two_threads|_single|
+  _single_one_rank_two_threads], BENCH paper_run_particles[...],
   BENCH paper_run_projected_hours[...] (goal <= 0.75 in double precision) with _min, _max.
 
 usage: bench_paper_run.py --driver liggghts-lbm --script examples/pore/in.pore
@@ -38,13 +42,13 @@ N_DEM = 100
 SCENE = {"cells_per_d": 7.1, "c_in": 0.05, "n_dem": N_DEM, "vtk_every": 0}
 
 
-def time_run(driver, script, mpirun, fluid_steps, procs):
+def time_run(driver, script, mpirun, fluid_steps, procs, ranks, threads):
     knobs = dict(SCENE, warmup=N_DEM, steps=fluid_steps * N_DEM, thermo_every=fluid_steps * N_DEM,
                  procs=procs)
-    cmd = [mpirun, "-np", "2", "--allow-run-as-root", "--oversubscribe", driver, "-in", script]
+    cmd = [mpirun, "-np", str(ranks), "--allow-run-as-root", "--oversubscribe", driver, "-in", script]
     for name, value in knobs.items():
         cmd += ["-var", name, str(value)]
-    env = dict(os.environ, OMP_NUM_THREADS="1")
+    env = dict(os.environ, OMP_NUM_THREADS=str(threads))
     with tempfile.TemporaryDirectory(prefix="bench_paper_run_") as work:
         out = subprocess.run(cmd, cwd=work, env=env, capture_output=True, text=True,
                              errors="replace").stdout
@@ -69,22 +73,27 @@ def main():
     parser.add_argument("--repeat", type=int, default=3)
     args = parser.parse_args()
     script = os.path.abspath(args.script)
-    # (suffix, driver, LIGGGHTS processors grid): the figure is for the grid split across the
-    # flow (each rank holds half of every region, so both do coupling work); _along_flow is
-    # in.pore's default grid (the inlet's rank holds all the arriving particles).
-    runs = [("", args.driver, "1 * 1"), ("_along_flow", args.driver, "* 1 1")]
+    # (suffix, driver, LIGGGHTS processors grid, MPI ranks, OpenMP threads per rank): the
+    # figure is for 2 ranks split across the flow (each rank holds half of every region, so
+    # both do coupling work); _along_flow is in.pore's default grid (the inlet's rank holds
+    # all the arriving particles); _one_rank_two_threads the same two cores as one rank.
+    runs = [("", args.driver, "1 * 1", 2, 1), ("_along_flow", args.driver, "* 1 1", 2, 1),
+            ("_one_rank_two_threads", args.driver, "1 1 1", 1, 2)]
     if args.single_driver:
-        runs.append(("_single", args.single_driver, "1 * 1"))
-    times = {suffix: [] for suffix, _, _ in runs}
+        runs.append(("_single", args.single_driver, "1 * 1", 2, 1))
+        runs.append(("_single_one_rank_two_threads", args.single_driver, "1 1 1", 1, 2))
+    times = {run[0]: [] for run in runs}
     particles = {}
     for round_ in range(args.repeat):
-        for suffix, driver, procs in runs:
-            per_step, count = time_run(os.path.abspath(driver), script, args.mpirun, args.fluid_steps, procs)
+        for suffix, driver, procs, ranks, threads in runs:
+            per_step, count = time_run(os.path.abspath(driver), script, args.mpirun, args.fluid_steps,
+                                       procs, ranks, threads)
             times[suffix].append(per_step)
             particles[suffix] = count
-            print(f"bench_paper_run: round {round_ + 1}, {driver}, processors {procs}: {per_step:.4g} s "
-                  f"per fluid step, {count} particles", flush=True)
-    for suffix, _, _ in runs:
+            print(f"bench_paper_run: round {round_ + 1}, {driver}, {ranks} rank(s) x {threads} "
+                  f"thread(s), processors {procs}: {per_step:.4g} s per fluid step, {count} particles",
+                  flush=True)
+    for suffix, *_ in runs:
         t = sorted(times[suffix])
         median = statistics.median(t)
         print(f"BENCH paper_run_fluid_step_s{suffix} {median:.4g} s")
