@@ -7,6 +7,7 @@
 // further along the row while this one is computed (prefetch_node, prefetch_pulled).
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 #ifdef _OPENMP
@@ -24,7 +25,9 @@ constexpr int kPlaneAhead = 4;
 
 // visit(cell) for every fluid node of rows [first_row, last_row) of local plane `plane`
 // normal to `axis`: a row runs along the first tangential axis, rows along the second;
-// ahead(cell) first for the node kPlaneAhead places further along the row.
+// ahead(cell) first for the node kPlaneAhead places further along the row. A visit that
+// takes two arguments gets the node's position in the plane too, row * row length + place
+// in the row (a slot of its own in a buffer of the plane's size).
 template <typename Visit, typename Ahead>
 void for_plane_rows(const BlockLayout& layout, const std::vector<std::uint8_t>& node_type,
                     int axis, int plane, int first_row, int last_row, Visit& visit, Ahead& ahead) {
@@ -39,7 +42,11 @@ void for_plane_rows(const BlockLayout& layout, const std::vector<std::uint8_t>& 
     for (int s1 = 0; s1 < n1; ++s1) {
       const std::size_t cell = origin + s2 * step2 + s1 * step1;
       if (s1 + kPlaneAhead < n1) ahead(cell + kPlaneAhead * step1);
-      if (node_type[cell] == kFluid) visit(cell);
+      if (node_type[cell] != kFluid) continue;
+      if constexpr (std::is_invocable_v<Visit&, std::size_t, std::size_t>)
+        visit(cell, std::size_t(s2) * std::size_t(n1) + std::size_t(s1));
+      else
+        visit(cell);
     }
 }
 

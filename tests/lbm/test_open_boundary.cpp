@@ -2,10 +2,18 @@
 // flux conservation through the paper's pore constriction.
 #include <gtest/gtest.h>
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 
 #include "cases/serial_flow.h"
+#include "lbm/d3q19.h"
+#include "lbm/macroscopic.h"
+#include "lbm/node_type.h"
 #include "lbm/pore_scene.h"
 
 TEST(OpenBoundary, FluxIsConservedThroughThePoreConstriction) {
@@ -130,4 +138,73 @@ TEST(OpenBoundary, FaceMassesAccountForTheMassChangeExactly) {
     EXPECT_GT(std::abs(change), 1e-3);  // the start-up changes the mass: a real test
     EXPECT_NEAR(change, booked, 1e-10 * through);
   }
+}
+
+namespace {
+struct StepOutcome {
+  lbm::PopulationField::Storage populations;
+  double pressure_loss = 0.0;
+  double reference_pressure_loss = 0.0;
+};
+
+// The mean pressure of global x-plane `x` as the obvious loop gives it: every fluid node in
+// plane order (y innermost), one running sum.
+double plane_pressure_by_loop(const lbm::FluidSolver& solver, int x) {
+  const lbm::BlockLayout& g = solver.layout();
+  double sum = 0.0, count = 0.0;
+  for (int k = 0; k < g.size(2); ++k)
+    for (int j = 0; j < g.size(1); ++j) {
+      const std::size_t cell = g.cell(x, j, k);
+      if (solver.node_types()[cell] != lbm::kFluid) continue;
+      sum += solver.density(cell);
+      count += 1.0;
+    }
+  return lbm::D3Q19::cs2 * sum / count;
+}
+
+// Steps of the pore scene, a plane larger than the open faces' and the pressure's split
+// threshold (24 x 24 nodes), ghost planes of the periodic axes above the copies' threshold,
+// more static wall links than their split threshold, on `threads` OpenMP threads.
+StepOutcome pore_steps(int threads) {
+#ifdef _OPENMP
+  const int before = omp_get_max_threads();
+  omp_set_num_threads(threads);
+#else
+  (void)threads;
+#endif
+  lbm::PoreSceneSpec spec{8, 8, 24, 24, 24, 15};
+  const auto g = lbm::make_pore_scene(spec);
+  lbm::FluidParameters p;
+  p.tau = 0.8;
+  p.periodic = {false, true, true};
+  lbm::FlowDrive drive;
+  drive.kind = lbm::FlowDrive::kInletVelocity;
+  drive.inlet_velocity = 0.02;
+  lbm::FluidSolver solver(g, p, drive, cases::serial_decomposition(g, p.periodic));
+  for (int s = 0; s < 30; ++s) solver.step();
+  StepOutcome out;
+  out.populations = solver.populations().raw();
+  out.pressure_loss = lbm::pressure_loss(solver);
+  out.reference_pressure_loss =
+      plane_pressure_by_loop(solver, 0) - plane_pressure_by_loop(solver, g.dims()[0] - 1);
+#ifdef _OPENMP
+  omp_set_num_threads(before);
+#endif
+  return out;
+}
+}  // namespace
+
+// The fluid step's stages split over OpenMP threads (static walls, open faces, periodic ghost
+// copies, collide-stream) and the pressure loss (the plane densities on the threads, their
+// sum on one) give the one-thread result bit for bit, and the pressure loss is the plain
+// loop's sum.
+TEST(OpenBoundary, TwoThreadsGiveTheOneThreadStepAndPressureLossBitForBit) {
+  const StepOutcome one = pore_steps(1), two = pore_steps(2);
+  ASSERT_EQ(one.populations.size(), two.populations.size());
+  EXPECT_EQ(0, std::memcmp(one.populations.data(), two.populations.data(),
+                           one.populations.size() * sizeof(lbm::Real)));
+  EXPECT_GT(one.pressure_loss, 0.0);
+  EXPECT_EQ(one.pressure_loss, two.pressure_loss);
+  EXPECT_EQ(one.pressure_loss, one.reference_pressure_loss);
+  EXPECT_EQ(two.pressure_loss, two.reference_pressure_loss);
 }
