@@ -29,6 +29,7 @@
 #include "plugin_common/ranks_error.h"
 #include "plugin_common/stop_run.h"
 #include "plugin_common/stop_signals.h"
+#include "plugin_common/thread_cores.h"
 #include "pore_scene_setup.h"
 #include "neighbor.h"
 #include "update.h"
@@ -141,11 +142,15 @@ void FixLbmPore::init() {
   neighbor->requests[request]->fix = 1;
   neighbor->requests[request]->half = 0;
   neighbor->requests[request]->gran = 1;
-  if (comm->me == 0)
+  const lbm_pore::ThreadReport threads = lbm_pore::thread_report(world);
+  if (comm->me == 0) {
     lbm_pore::print_to_screen_and_log(screen, logfile,
-                                      lbm_pore::setup_summary(options_, *units_, frame_->dims, solver_->drive(),
-                                                              update->dt, monitor_setup_.pore_diameter,
-                                                              solver_->bytes_per_node()).c_str());
+                                      (lbm_pore::setup_summary(options_, *units_, frame_->dims, solver_->drive(),
+                                                               update->dt, monitor_setup_.pore_diameter,
+                                                               solver_->bytes_per_node()) +
+                                       threads.summary).c_str());
+    if (!threads.warning.empty()) error->warning(FLERR, threads.warning.c_str());
+  }
 }
 
 void FixLbmPore::init_list(int, NeighList* list) { list_ = list; }

@@ -9,6 +9,7 @@ CASE: adhesion | clog | clog_pressure | parallel | mpi_splits | outputs | restar
 import math
 import os
 import subprocess
+import tempfile
 
 from liggghts_run import (at_step, check, error_line, has_nan, main, relative_difference,
                           thermo_rows)
@@ -267,7 +268,34 @@ def case_bad_arguments(h):
         check(name, ok, f"exit {code}, {error[:170]!r}", f"ERROR naming {words}, exit != 0, no crash, no NaN")
 
 
+def case_threads_on_one_core(h):
+    """Two OpenMP threads in a process that may run on one core only (what mpirun's default
+    binding, one core per rank for up to 2 ranks, does to OMP_NUM_THREADS=2): the set-up
+    says how many threads each rank runs and warns, naming the cores and the mpirun options
+    that lift the binding; one thread on the same core gives no warning."""
+    core = min(os.sched_getaffinity(0))
+    outputs = {}
+    for threads in (2, 1):
+        env = dict(os.environ, OMP_NUM_THREADS=str(threads))
+        cmd = [h.driver, "-in", os.path.join(h.scripts, "in.outputs"), "-var", "dir", h.scripts,
+               "-var", "steps", "100", "-log", "none"]
+        with tempfile.TemporaryDirectory(dir=h.work) as work:
+            result = subprocess.run(cmd, cwd=work, env=env, capture_output=True, text=True, errors="replace",
+                                    timeout=120, preexec_fn=lambda: os.sched_setaffinity(0, {core}))
+        outputs[threads] = result.stdout + result.stderr
+        check(f"threads_on_one_core_{threads}_thread_run", result.returncode == 0 and not error_line(outputs[threads]),
+              f"exit {result.returncode}", "exit 0, no ERROR")
+    warning = next((line for line in outputs[2].splitlines() if line.startswith("WARNING: fix lbm/pore: rank")), "")
+    check("threads_on_one_core_warns", "2 OpenMP threads on 1 core" in warning and "--bind-to none" in warning,
+          repr(warning[:150]), "a WARNING naming 2 threads on 1 core and 'mpirun --bind-to none'")
+    check("threads_on_one_core_summary", "fix lbm/pore: 2 OpenMP threads per rank, 1 rank" in outputs[2],
+          "summary line" if "OpenMP threads per rank" in outputs[2] else "none", "'2 OpenMP threads per rank, 1 rank'")
+    check("one_thread_on_one_core_does_not_warn", "WARNING: fix lbm/pore: rank" not in outputs[1],
+          "no warning" if "WARNING: fix lbm/pore: rank" not in outputs[1] else "a warning", "no warning")
+
+
 if __name__ == "__main__":
     main({"adhesion": case_adhesion, "clog": case_clog, "clog_pressure": case_clog_pressure,
           "parallel": case_parallel, "mpi_splits": case_mpi_splits, "outputs": case_outputs,
-          "restart": case_restart, "bad_arguments": case_bad_arguments}, __doc__)
+          "restart": case_restart, "bad_arguments": case_bad_arguments,
+          "threads_on_one_core": case_threads_on_one_core}, __doc__)

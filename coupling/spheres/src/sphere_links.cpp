@@ -113,24 +113,29 @@ void build_sphere_links(const SphereMapping& mapping, const ParticleView& view,
     append_links(mapping, view, node_type, 0, n, out);
     return;
   }
-  // Thread t takes the t-th contiguous block of spheres (by surface cells) into its own list;
-  // the lists are joined in thread order, i.e. in particle order: the same links as one
-  // thread's.
+  // Thread t takes the t-th contiguous block of spheres (by surface cells): thread 0 into
+  // `out` itself, the others into lists of their own, which join `out` in thread order, i.e.
+  // in particle order (the same links as one thread's), each copied by the thread that built
+  // it, from its own core's cache.
   scratch->resize(std::size_t(threads));
 #pragma omp parallel num_threads(threads)
   {
 #ifdef _OPENMP
-    const std::size_t t = std::size_t(omp_get_thread_num());
-    const std::size_t nt = std::size_t(omp_get_num_threads());
+    const int t = omp_get_thread_num(), nt = omp_get_num_threads();
 #else
-    const std::size_t t = 0, nt = 1;
+    const int t = 0, nt = 1;
 #endif
-    SphereLinks& part = (*scratch)[t];
-    part.clear();
-    append_links(mapping, view, node_type, sphere_of_share(mapping, n, t, nt),
-                 sphere_of_share(mapping, n, t + 1, nt), part);
+    SphereLinks& part = t == 0 ? out : (*scratch)[std::size_t(t)];
+    if (t > 0) part.clear();
+    append_links(mapping, view, node_type, sphere_of_share(mapping, n, std::size_t(t), std::size_t(nt)),
+                 sphere_of_share(mapping, n, std::size_t(t) + 1, std::size_t(nt)), part);
+    // Iteration u runs on thread u; ordered: after thread u - 1's part has joined.
+#pragma omp for ordered schedule(static, 1)
+    for (int u = 0; u < nt; ++u) {
+#pragma omp ordered
+      if (u > 0) out.append((*scratch)[std::size_t(u)]);
+    }
   }
-  for (const SphereLinks& part : *scratch) out.append(part);
 }
 
 }  // namespace coupling

@@ -45,7 +45,11 @@ SCENE = {"cells_per_d": 7.1, "c_in": 0.05, "n_dem": N_DEM, "vtk_every": 0}
 def time_run(driver, script, mpirun, fluid_steps, procs, ranks, threads):
     knobs = dict(SCENE, warmup=N_DEM, steps=fluid_steps * N_DEM, thermo_every=fluid_steps * N_DEM,
                  procs=procs)
-    cmd = [mpirun, "-np", str(ranks), "--allow-run-as-root", "--oversubscribe", driver, "-in", script]
+    cmd = [mpirun, "-np", str(ranks), "--allow-run-as-root", "--oversubscribe"]
+    # mpirun binds each of up to 2 ranks to one core: a rank's threads would share it.
+    if threads > 1:
+        cmd += ["--bind-to", "none"]
+    cmd += [driver, "-in", script]
     for name, value in knobs.items():
         cmd += ["-var", name, str(value)]
     env = dict(os.environ, OMP_NUM_THREADS=str(threads))
