@@ -3,6 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <vector>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 #include "lbm/node_type.h"
 
@@ -51,21 +56,27 @@ double compressibility_error_estimate(double density_difference) {
 }
 
 namespace {
+// visit(cell, i, j, k) for the owned fluid nodes of planes k in [k_first, k_last), in k, j, i
+// order, until a visit returns false.
 template <class Visit>
-void for_owned_fluid(const FluidSolver& s, Visit visit) {
+void for_owned_fluid(const FluidSolver& s, int k_first, int k_last, Visit visit) {
   const BlockLayout& g = s.layout();
-  for (int k = 0; k < g.size(2); ++k)
+  for (int k = k_first; k < k_last; ++k)
     for (int j = 0; j < g.size(1); ++j)
       for (int i = 0; i < g.size(0); ++i) {
         const std::size_t cell = g.cell(i, j, k);
         if (s.node_types()[cell] == kFluid && !visit(cell, i, j, k)) return;
       }
 }
-}  // namespace
+template <class Visit>
+void for_owned_fluid(const FluidSolver& s, Visit visit) {
+  for_owned_fluid(s, 0, s.layout().size(2), visit);
+}
 
-FluidStateProblem check_fluid_state(const FluidSolver& solver, double max_speed) {
+// The first bad node of planes [k_first, k_last) in scan order.
+FluidStateProblem first_problem(const FluidSolver& solver, double max_speed, int k_first, int k_last) {
   FluidStateProblem problem;
-  for_owned_fluid(solver, [&](std::size_t cell, int i, int j, int k) {
+  for_owned_fluid(solver, k_first, k_last, [&](std::size_t cell, int i, int j, int k) {
     const double rho = solver.density(cell);
     const auto u = solver.velocity(cell);
     const double speed = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
@@ -78,6 +89,32 @@ FluidStateProblem check_fluid_state(const FluidSolver& solver, double max_speed)
     return false;
   });
   return problem;
+}
+}  // namespace
+
+FluidStateProblem check_fluid_state(const FluidSolver& solver, double max_speed) {
+  // A scan of the whole lattice: its planes split over the OpenMP threads, each thread's
+  // first bad node kept; the lowest planes' is the serial scan's first.
+  const int planes = solver.layout().size(2);
+#ifdef _OPENMP
+  const int threads = std::max(1, std::min(omp_get_max_threads(), planes));
+#else
+  const int threads = 1;
+#endif
+  if (threads == 1) return first_problem(solver, max_speed, 0, planes);
+  std::vector<FluidStateProblem> found(std::size_t(threads), FluidStateProblem{});
+#pragma omp parallel num_threads(threads)
+  {
+#ifdef _OPENMP
+    const int t = omp_get_thread_num(), nt = omp_get_num_threads();
+#else
+    const int t = 0, nt = 1;
+#endif
+    found[std::size_t(t)] = first_problem(solver, max_speed, planes * t / nt, planes * (t + 1) / nt);
+  }
+  for (const FluidStateProblem& problem : found)
+    if (problem.found) return problem;
+  return {};
 }
 
 double max_speed(const FluidSolver& solver) {

@@ -108,6 +108,37 @@ TEST(Stability, NanAndRunawayNodesAreReportedWithTheirPlace) {
   EXPECT_NEAR(lbm::max_speed(solver), 0.4, 1e-12);
 }
 
+// The scan is split over the OpenMP threads by planes: with a bad node in the first and in
+// the last plane, every thread count reports the first in scan order (k, j, i), as one
+// thread does.
+TEST(Stability, TheFirstBadNodeInScanOrderIsReportedOnAnyNumberOfThreads) {
+  lbm::VoxelGeometry g({6, 5, 8});
+  lbm::FluidParameters p;
+  p.periodic = {true, true, true};
+  lbm::FluidSolver solver(g, p, lbm::FlowDrive{}, cases::serial_decomposition(g, p.periodic));
+  solver.populations().at(2, solver.layout().cell(4, 3, 7)) = std::nan("");
+  solver.populations().at(5, solver.layout().cell(1, 4, 0)) = -2.0;  // negative density
+  solver.populations().at(1, solver.layout().cell(0, 1, 7)) = std::nan("");
+#ifdef _OPENMP
+  const int before = omp_get_max_threads();
+  const int most = 4;
+#else
+  const int most = 1;
+#endif
+  for (int threads = 1; threads <= most; ++threads) {
+#ifdef _OPENMP
+    omp_set_num_threads(threads);
+#endif
+    const auto problem = lbm::check_fluid_state(solver, 0.3);
+    ASSERT_TRUE(problem.found) << threads;
+    EXPECT_EQ(problem.node, (std::array<int, 3>{1, 4, 0})) << threads << " threads";
+    EXPECT_LT(problem.density, 0.0);
+  }
+#ifdef _OPENMP
+  omp_set_num_threads(before);
+#endif
+}
+
 // The masses booked through the open faces (FluidSolver::open_face_mass, the populations
 // that crossed them) account for every change of the fluid mass, also while the flow starts
 // up and the density field changes (where rho u sampled at the end layers is off by about
