@@ -9,6 +9,8 @@
 #include "lbm/d3q19.h"
 #include "lbm/halo_exchange.h"
 #include "lbm/input_error.h"
+#include "lbm/macroscopic.h"
+#include "lbm/moving_wall/moment_cache.h"
 #include "lbm/open_boundary.h"
 
 namespace lbm {
@@ -176,6 +178,27 @@ void FluidSolver::exchange_ghost_densities(std::vector<double>& ghost_density) {
     }
   }
   halo_->exchange_scalar(ghost_density);
+}
+
+// The owned planes' moments, then the scalar sweeps along the marked axes carry them as
+// exchange_halo() would carry the populations they come from (exchange_ghost_densities).
+void FluidSolver::exchange_ghost_moments(const std::array<bool, 3>& axes,
+                                         moving_wall::GhostMoments& ghosts) {
+  auto& c = ghosts.component;
+  for (auto& component : c) component.resize(layout_.num_cells());
+  ghosts.cells.clear();
+  for (int a = 0; a < 3; ++a) {
+    if (!axes[a]) continue;
+    for (const std::size_t cell : halo_->sent_planes(a)) {
+      const NodeMoments m = node_moments(f_, cell, parameters_.body_force);
+      c[0][cell] = m.rho;
+      for (int b = 0; b < 3; ++b) c[1 + b][cell] = m.u[b];
+    }
+    const auto& filled = halo_->ghost_planes(a);
+    ghosts.cells.insert(ghosts.cells.end(), filled.begin(), filled.end());
+  }
+  double* fields[4] = {c[0].data(), c[1].data(), c[2].data(), c[3].data()};
+  halo_->exchange_scalars(fields, 4, axes);
 }
 
 bool FluidSolver::is_exchanged_ghost(std::size_t cell) const {

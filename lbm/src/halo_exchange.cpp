@@ -78,9 +78,17 @@ HaloExchange::HaloExchange(const Decomposition& decomposition, const BlockLayout
 void HaloExchange::collect_sent_cells() {
   for (int a = 0; a < 3; ++a) {
     const auto& nb = decomposition_.neighbor[a];
-    auto add = [&](std::size_t, std::size_t cell) { sent_cells_.push_back(cell); };
-    if (nb[0] >= 0) for_plane(layout_, a, 0, add);
-    if (nb[1] >= 0) for_plane(layout_, a, layout_.size(a) - 1, add);
+    auto add = [&](std::size_t, std::size_t cell) { sent_planes_[a].push_back(cell); };
+    auto ghost = [&](std::size_t, std::size_t cell) { ghost_planes_[a].push_back(cell); };
+    if (nb[0] >= 0) {
+      for_plane(layout_, a, 0, add);
+      for_plane(layout_, a, -1, ghost);
+    }
+    if (nb[1] >= 0) {
+      for_plane(layout_, a, layout_.size(a) - 1, add);
+      for_plane(layout_, a, layout_.size(a), ghost);
+    }
+    sent_cells_.insert(sent_cells_.end(), sent_planes_[a].begin(), sent_planes_[a].end());
   }
   std::sort(sent_cells_.begin(), sent_cells_.end());
   sent_cells_.erase(std::unique(sent_cells_.begin(), sent_cells_.end()), sent_cells_.end());
@@ -248,7 +256,13 @@ void HaloExchange::exchange_scalar(std::vector<double>& values) {
     throw InputError("halo exchange: scalar field does not match the block layout");
   double* arrays[1] = {values.data()};
   // The same sweeps as exchange(), so edge ghosts arrive the same way.
-  for (int axis = 0; axis < 3; ++axis) sweep(axis, arrays, 1, arrays, 1);
+  exchange_scalars(arrays, 1, {true, true, true});
+}
+
+void HaloExchange::exchange_scalars(double* const* fields, int count, const std::array<bool, 3>& axes) {
+  if (count > D3Q19::Q) throw InputError("halo exchange: more than 19 fields in one exchange");
+  for (int axis = 0; axis < 3; ++axis)
+    if (axes[axis]) sweep(axis, fields, count, fields, count);
 }
 
 bool HaloExchange::exchanges_face(int axis, int side) const {

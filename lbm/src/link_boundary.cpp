@@ -54,7 +54,8 @@ int link_threads(std::size_t num_links) {
 void apply_links(const std::vector<BoundaryLink>& links, MovingWallScheme scheme,
                  FluidSolver& solver, moving_wall::MomentCache* cache,
                  std::vector<std::array<double, 3>>* momentum,
-                 std::vector<LinkPopulations>* populations) {
+                 std::vector<LinkPopulations>* populations,
+                 const moving_wall::GhostMoments* ghosts) {
   // The links of spheres and walls are distinct and leave fluid nodes: they may be split over
   // threads (moving_wall::apply).
   const int threads = link_threads(links.size());
@@ -66,6 +67,7 @@ void apply_links(const std::vector<BoundaryLink>& links, MovingWallScheme scheme
   moving_wall::MomentCache local;
   moving_wall::MomentCache& moments = cache ? *cache : local;
   moments.begin(solver.layout().num_cells(), threads);
+  if (ghosts) moments.preset(*ghosts);
   const moving_wall::MeiLuoShyy mls{solver.parameters().rho0, 1.0 / solver.trt().omega_plus,
                                     solver.parameters().body_force, &solver.node_types(), &moments};
   moving_wall::apply(links, mls, solver.layout(), solver.populations(), momentum, threads,

@@ -1,7 +1,8 @@
-// The halo exchange's per-axis "all 19 populations" flag (coupling::whole_ghost_axes): raised
-// exactly when a sphere covers a node on the second plane from a face the exchange fills,
-// with Mei-Luo-Shyy; and the coupled step with the flags equals, bit for bit, the step with
-// all 19 populations exchanged, while the crossing five alone would differ. Serial, periodic
+// The halo exchange's per-axis flag (coupling::whole_ghost_axes): raised exactly when a
+// sphere covers a node on the second plane from a face the exchange fills, with
+// Mei-Luo-Shyy; and the coupled step, which then sends the ghost nodes' moments besides the
+// crossing five (SphereCoupling::exchange_halo), equals, bit for bit, the step with all 19
+// populations exchanged, while the crossing five alone would differ. Serial, periodic
 // axes (a rank alone on a periodic axis exchanges with itself); the 2-rank case is in
 // tests/lbm_parallel/test_sphere_halo_mpi.cpp.
 #include <gtest/gtest.h>
@@ -81,7 +82,7 @@ TEST(WholeGhostAxes, CoupledStepEqualsTheExchangeOfAll19) {
   for (int t = 0; t < 30; ++t) {
     for (int a = 0; a < 3; ++a) particles.position[a] = x0[a] + v[a] * t;
     c_run.step(particles.view());
-    raised += c_run.halo_populations().all[0];
+    raised += c_run.ghost_moment_axes()[0];
     cases::staged_step(c_all, particles.view(), lbm::HaloPopulations::every());
     cases::staged_step(c_crossing, particles.view(), lbm::HaloPopulations::crossing());
     ASSERT_EQ(cases::max_population_difference(*run, *all), 0.0) << "step " << t;
@@ -91,6 +92,6 @@ TEST(WholeGhostAxes, CoupledStepEqualsTheExchangeOfAll19) {
     }
   }
   EXPECT_EQ(raised, 30);
-  EXPECT_EQ(c_run.halo_counts().whole[2], 0);  // z is not periodic: never raised
+  EXPECT_EQ(c_run.halo_counts().moments[2], 0);  // z is not periodic: never raised
   EXPECT_GT(cases::max_population_difference(*crossing, *all), 1e-9);
 }

@@ -1,7 +1,7 @@
 // The sphere coupling's halo exchange on 2 ranks (mpirun -np 2): the step's exchange sends
-// the five crossing populations per face, all 19 on the axes where a sphere covers a node
-// on the second plane from a face (coupling::whole_ghost_axes, Mei-Luo-Shyy reads the whole
-// ghost node behind the face). Two spheres sit on the second planes from the rank faces,
+// the five crossing populations per face, and the ghost nodes' moments on the axes where a
+// sphere covers a node on the second plane from a face (coupling::whole_ghost_axes,
+// Mei-Luo-Shyy reads the moments of the ghost node behind the face). Two spheres sit on the second planes from the rank faces,
 // with links of fraction below 1/2 from the face planes (each alone, then both): the coupled step equals the same
 // stages with all 19 exchanged bit for bit, equals the serial run to round-off, and the
 // crossing five alone would change the result. Links the coupling; lives here for the MPI
@@ -88,7 +88,7 @@ void check_split(int axis, int sphere) {
       for (int c = 0; c < 3; ++c) particles.position[3 * p + c] = x0[p][c] + v[p][c] * t;
     c_run.step(particles.view());
     c_serial.step(particles.view());
-    raised += c_run.halo_populations().all[axis];
+    raised += c_run.ghost_moment_axes()[axis];
     cases::staged_step(c_all, particles.view(), lbm::HaloPopulations::every());
     cases::staged_step(c_crossing, particles.view(), lbm::HaloPopulations::crossing());
     double same = cases::max_population_difference(*run, *all);

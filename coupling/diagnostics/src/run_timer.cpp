@@ -31,10 +31,10 @@ std::string RunTimer::report(double now, const StageTimes& t, const HaloCounts* 
       t.collide_stream);
   if (halo && halo->steps > 0)
     std::snprintf(text + n + m, sizeof text - n - m,
-                  "fix lbm/pore: halo exchange of the coupled steps: all 19 populations along "
-                  "x, y, z in %lld, %lld, %lld of %lld steps (the others: the 5 crossing each "
-                  "face)\n",
-                  halo->whole[0], halo->whole[1], halo->whole[2], halo->steps);
+                  "fix lbm/pore: halo exchange of the coupled steps: the 5 populations crossing "
+                  "each face, and the ghost nodes' moments (for Mei-Luo-Shyy) along x, y, z in "
+                  "%lld, %lld, %lld of %lld steps\n",
+                  halo->moments[0], halo->moments[1], halo->moments[2], halo->steps);
   return text;
 }
 

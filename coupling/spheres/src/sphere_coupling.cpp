@@ -48,9 +48,10 @@ void SphereCoupling::map_and_refill(const ParticleView& view) {
     // refill.cpp), and only the averaged-density scheme reads any. The exchange is
     // collective: every rank takes it when any rank needs it. Nothing else reads ghost
     // populations before the step's own exchange, so they may stay stale.
-    // The same sum decides, per axis, whether the step's exchange sends all 19 populations
-    // (whole_ghost_axes: Mei-Luo-Shyy may read a whole ghost node) or the crossing five:
-    // one collective call for both, and every rank sends what its neighbours expect.
+    // The same sum decides, per axis, whether the step's exchange sends the ghost nodes'
+    // moments besides the crossing five (whole_ghost_axes: Mei-Luo-Shyy may read the
+    // moments of a ghost node): one collective call for both, and every rank sends what its
+    // neighbours expect.
     long long counts[4] = {0, 0, 0, 0};
     if (options_.refill == RefillScheme::kEquilibriumAveragedDensity)
       for (std::size_t cell : change.uncovered) counts[0] += solver_.borders_exchanged_ghost(cell);
@@ -59,8 +60,8 @@ void SphereCoupling::map_and_refill(const ParticleView& view) {
     solver_.decomposition().comm.sum(counts, 4);
     const long long uncovered = counts[0];
     for (int a = 0; a < 3; ++a) {
-      halo_.all[a] = counts[1 + a] > 0;
-      halo_counts_.whole[a] += halo_.all[a];
+      ghost_moment_axes_[a] = counts[1 + a] > 0;
+      halo_counts_.moments[a] += ghost_moment_axes_[a];
     }
     ++halo_counts_.steps;
     if (uncovered > 0) solver_.exchange_ghost_densities(ghost_density_);
@@ -70,9 +71,18 @@ void SphereCoupling::map_and_refill(const ParticleView& view) {
   mapping_.commit(change, solver_.node_types());
 }
 
+void SphereCoupling::exchange_halo() {
+  solver_.exchange_halo(lbm::HaloPopulations::crossing());
+  ghost_moments_fresh_ = ghost_moment_axes_[0] || ghost_moment_axes_[1] || ghost_moment_axes_[2];
+  if (ghost_moments_fresh_) solver_.exchange_ghost_moments(ghost_moment_axes_, ghost_moments_);
+}
+
 void SphereCoupling::apply_moving_walls_and_force(const ParticleView& view) {
   const double rho0 = solver_.parameters().rho0;
   const bool conserve = options_.conserve_link_mass;
+  // Received by this step's exchange_halo, or none (a host that exchanged by itself).
+  const lbm::moving_wall::GhostMoments* ghosts = ghost_moments_fresh_ ? &ghost_moments_ : nullptr;
+  ghost_moments_fresh_ = false;
   {
     StageTimer t(times_.moving_walls);
     build_sphere_links(mapping_, view, solver_.node_types(), links_, &link_scratch_);
@@ -83,10 +93,10 @@ void SphereCoupling::apply_moving_walls_and_force(const ParticleView& view) {
       // the force is the scheme's own.
       link_defect_ = lbm::moving_wall::apply_links_and_restore_mass(
           links_.links, options_.wall_scheme, solver_, moment_cache_, link_sweep_,
-          link_populations_, defect_per_link_);
+          link_populations_, defect_per_link_, ghosts);
     } else {
       lbm::apply_links(links_.links, options_.wall_scheme, solver_, &moment_cache_, nullptr,
-                       &link_populations_);
+                       &link_populations_, ghosts);
       link_defect_ = lbm::moving_wall::link_mass_defect(links_.links, rho0, link_populations_);
     }
     surface_mass_ = lbm::moving_wall::moving_surface_mass(links_.links, rho0) +
@@ -101,7 +111,7 @@ void SphereCoupling::step(const ParticleView& view) {
   map_and_refill(view);
   {
     StageTimer t(times_.halo);
-    solver_.exchange_halo(halo_);
+    exchange_halo();
   }
   {
     StageTimer t(times_.static_walls);

@@ -17,6 +17,9 @@
 namespace lbm {
 
 class HaloExchange;
+namespace moving_wall {
+struct GhostMoments;
+}
 
 struct FluidParameters {
   double tau = 1.0;                 // relaxation time (lattice units); nu = (tau - 1/2)/3
@@ -78,6 +81,13 @@ class FluidSolver {
   // while one value per cell travels instead of 19 populations; the populations stay as
   // they are. Other cells of `ghost_density` hold nothing of use. Collective.
   void exchange_ghost_densities(std::vector<double>& ghost_density);
+  // The moments (node_moments, with the body force) that exchange_halo() with all 19
+  // populations along the axes marked in `axes` would let a reader compute at the ghosts of
+  // those axes, into `ghosts` (components sized num_cells() on first use; `ghosts.cells` the
+  // ghosts filled), while four values per cell travel instead of 19 populations. Only the
+  // ghosts of a marked axis are filled (edge ghosts when both their axes are marked, as the
+  // population exchange fills them). Collective; every rank must pass the same `axes`.
+  void exchange_ghost_moments(const std::array<bool, 3>& axes, moving_wall::GhostMoments& ghosts);
   // Whether `cell` is a ghost that exchange_halo() fills (HaloExchange::is_exchanged_ghost).
   bool is_exchanged_ghost(std::size_t cell) const;
   void apply_wall_bounce_back();

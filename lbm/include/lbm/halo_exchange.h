@@ -1,4 +1,5 @@
 #pragma once
+#include <array>
 #include <vector>
 
 #include "lbm/d3q19.h"
@@ -59,6 +60,13 @@ class HaloExchange {
   void exchange(PopulationField& field, const HaloPopulations& which);
   // Same for one scalar value per cell (e.g. particle ids on the lattice); doubles.
   void exchange_scalar(std::vector<double>& values);
+  // The same for `count` fields of num_cells() doubles at once, swept only along the axes
+  // marked in `axes`, in x, y, z order: the ghosts of the other axes keep what they held.
+  void exchange_scalars(double* const* fields, int count, const std::array<bool, 3>& axes);
+  // The cells of the padded planes that a sweep along `axis` sends (planes 0 and n - 1,
+  // where that side has a neighbour), and those it fills (the ghost planes -1 and n).
+  const std::vector<std::size_t>& sent_planes(int axis) const { return sent_planes_[axis]; }
+  const std::vector<std::size_t>& ghost_planes(int axis) const { return ghost_planes_[axis]; }
   // Whether the owned cell `cell` has a D3Q19 neighbour in a ghost that exchange() fills
   // (it lies on a face plane towards a neighbour rank or a periodic image); false for
   // ghost cells and for faces at a non-periodic domain edge, whose ghosts exchange() leaves.
@@ -90,6 +98,7 @@ class HaloExchange {
   BlockLayout layout_;
   std::vector<double> send_low_, send_high_, recv_low_, recv_high_;
   std::vector<std::size_t> sent_cells_;
+  std::array<std::vector<std::size_t>, 3> sent_planes_, ghost_planes_;
   // Per axis, the populations crossing a face upwards (c_q[a] = +1) and downwards (-1).
   int crossing_up_[3][D3Q19::Q] = {}, crossing_down_[3][D3Q19::Q] = {};
   int num_crossing_[3] = {0, 0, 0};

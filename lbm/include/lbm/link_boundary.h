@@ -40,10 +40,14 @@ int link_threads(std::size_t num_links);
 // temporary one is used); pass a long-lived one when calling every step. Long link lists
 // are split over the OpenMP threads (moving_wall::apply: same result for any number), so
 // the links must be distinct and leave fluid nodes, as those of spheres and walls do.
+// With Mei-Luo-Shyy, `ghosts` (if non-null) are the moments of ghost nodes received this
+// step (FluidSolver::exchange_ghost_moments), read instead of computing them from ghost
+// populations that were not exchanged.
 void apply_links(const std::vector<BoundaryLink>& links, MovingWallScheme scheme,
                  FluidSolver& solver, moving_wall::MomentCache* cache = nullptr,
                  std::vector<std::array<double, 3>>* momentum = nullptr,
-                 std::vector<LinkPopulations>* populations = nullptr);
+                 std::vector<LinkPopulations>* populations = nullptr,
+                 const moving_wall::GhostMoments* ghosts = nullptr);
 // Bounce-back or Bouzidi only, on bare arrays (Mei-Luo-Shyy needs the solver's tau and body
 // force: std::invalid_argument).
 void apply_links(const std::vector<BoundaryLink>& links, MovingWallScheme scheme, double rho0,

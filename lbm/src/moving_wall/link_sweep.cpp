@@ -43,7 +43,8 @@ LinkMassDefect apply_links_and_restore_mass(const std::vector<BoundaryLink>& lin
                                             MovingWallScheme scheme, FluidSolver& solver,
                                             MomentCache& cache, LinkSweep& order,
                                             std::vector<LinkPopulations>& populations,
-                                            std::vector<double>& per_link) {
+                                            std::vector<double>& per_link,
+                                            const GhostMoments* ghosts) {
   const double rho0 = solver.parameters().rho0;
   const BlockLayout& layout = solver.layout();
   PopulationField& f = solver.populations();
@@ -60,6 +61,7 @@ LinkMassDefect apply_links_and_restore_mass(const std::vector<BoundaryLink>& lin
       break;
     case MovingWallScheme::kMeiLuoShyy: {
       cache.begin(layout.num_cells(), threads);
+      if (ghosts) cache.preset(*ghosts);
       const MeiLuoShyy mls{rho0, 1.0 / solver.trt().omega_plus, solver.parameters().body_force,
                            &solver.node_types(), &cache};
       sweep(links, order, mls, layout, rho0, restorer, f, populations, per_link, threads);

@@ -16,4 +16,13 @@ void MomentCache::begin(std::size_t num_cells, int tables) {
   ++generation_;
 }
 
+void MomentCache::preset(const GhostMoments& ghosts) {
+  const auto& c = ghosts.component;
+  for (Table& t : tables_)
+    for (const std::size_t cell : ghosts.cells) {
+      t.stamp[cell] = generation_;
+      t.value[cell] = NodeMoments{c[0][cell], {c[1][cell], c[2][cell], c[3][cell]}};
+    }
+}
+
 }  // namespace lbm::moving_wall

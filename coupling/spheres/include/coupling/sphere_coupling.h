@@ -32,11 +32,12 @@ struct StageTimes {
          force = 0.0, open_boundaries = 0.0, collide_stream = 0.0;
 };
 
-// How often the step's halo exchange sent all 19 populations on each axis (the rest of the
-// steps sent the five crossing each face), over `steps` calls of map_and_refill.
+// How often the step's halo exchange sent, on each axis, the moments of the ghost nodes
+// besides the five populations crossing each face (Mei-Luo-Shyy reads the moments of a
+// ghost node, whole_ghost_axes), over `steps` calls of map_and_refill.
 struct HaloCounts {
   long long steps = 0;
-  std::array<long long, 3> whole{0, 0, 0};
+  std::array<long long, 3> moments{0, 0, 0};
 };
 
 // Owns the particle-dependent state of one rank's lattice (the mapping and the links) and
@@ -57,6 +58,11 @@ class SphereCoupling {
 
   // The stages, public so a host can time or reorder them; step() calls them in order.
   void map_and_refill(const ParticleView& view);
+  // The populations crossing each face, and on the axes map_and_refill marked the moments
+  // of the ghost nodes (four values each instead of the other 14 populations, the same
+  // result: FluidSolver::exchange_ghost_moments), which the next
+  // apply_moving_walls_and_force reads.
+  void exchange_halo();
   void apply_moving_walls_and_force(const ParticleView& view);
 
   const Vec3& force(std::size_t p) const { return loads_.force[p]; }
@@ -76,9 +82,9 @@ class SphereCoupling {
   const SphereLinks& links() const { return links_; }
   const SphereMapping& mapping() const { return mapping_; }
   const StageTimes& times() const { return times_; }
-  // The populations the step's exchange sends, per axis, as the last map_and_refill decided
-  // (all ranks alike); step() passes them to FluidSolver::exchange_halo.
-  const lbm::HaloPopulations& halo_populations() const { return halo_; }
+  // The axes along which the step's exchange sends the ghost nodes' moments, as the last
+  // map_and_refill decided (all ranks alike).
+  const std::array<bool, 3>& ghost_moment_axes() const { return ghost_moment_axes_; }
   const HaloCounts& halo_counts() const { return halo_counts_; }
   const SphereCouplingOptions& options() const { return options_; }
   lbm::FluidSolver& solver() { return solver_; }
@@ -101,8 +107,12 @@ class SphereCoupling {
   // The refill's ghost densities, one per lattice cell (8 B per node), allocated on the
   // first step whose refill reads a ghost (FluidSolver::exchange_ghost_densities).
   std::vector<double> ghost_density_;
+  // The ghosts' moments (32 B per node), allocated on the first step that sends them, and
+  // whether the last exchange_halo filled them for the moving walls still to come.
+  std::array<bool, 3> ghost_moment_axes_{false, false, false};
+  lbm::moving_wall::GhostMoments ghost_moments_;
+  bool ghost_moments_fresh_ = false;
   StageTimes times_;
-  lbm::HaloPopulations halo_ = lbm::HaloPopulations::every();
   HaloCounts halo_counts_;
 };
 

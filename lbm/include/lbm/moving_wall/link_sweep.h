@@ -20,6 +20,7 @@
 #include "lbm/block_layout.h"
 #include "lbm/link_boundary.h"
 #include "lbm/moving_wall/link_mass.h"
+#include "lbm/moving_wall/moment_cache.h"
 
 namespace lbm {
 class FluidSolver;
@@ -60,11 +61,12 @@ void sweep(const std::vector<BoundaryLink>& links, const LinkSweep& order, const
 // apply_links(links, scheme, solver, cache, nullptr, populations), then the link mass defect
 // (returned, and per link in `per_link`) and restore_link_mass, as one sweep, split over the
 // OpenMP threads by ranges of blocks (sweep in link_loop.h). The same result for any number
-// of threads.
+// of threads. `ghosts` as for apply_links.
 LinkMassDefect apply_links_and_restore_mass(const std::vector<BoundaryLink>& links,
                                             MovingWallScheme scheme, FluidSolver& solver,
                                             MomentCache& cache, LinkSweep& order,
                                             std::vector<LinkPopulations>& populations,
-                                            std::vector<double>& per_link);
+                                            std::vector<double>& per_link,
+                                            const GhostMoments* ghosts = nullptr);
 
 }  // namespace lbm::moving_wall

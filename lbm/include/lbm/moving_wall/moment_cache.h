@@ -6,6 +6,7 @@
 // A call that splits its links over OpenMP threads begins as many tables, one per thread,
 // so that no two threads write one entry (the values do not depend on which table holds
 // them: the result is the same for any number of threads).
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -13,10 +14,21 @@
 
 namespace lbm::moving_wall {
 
+// The moments of ghost nodes as their owners computed them (FluidSolver::
+// exchange_ghost_moments): four values per node travel instead of the 14 populations that
+// the crossing five leave out. node_moments of the owner's populations is exactly what the
+// receiver would compute from all 19 received, so the result does not change.
+struct GhostMoments {
+  std::array<std::vector<double>, 4> component;  // rho, u_x, u_y, u_z; num_cells() each
+  std::vector<std::size_t> cells;                // the ghosts whose components were received
+};
+
 class MomentCache {
  public:
   // Starts a new call with `tables` tables (threads): every cached value is stale.
   void begin(std::size_t num_cells, int tables = 1);
+  // After begin(): the ghosts' received moments stand in every table, as if read there.
+  void preset(const GhostMoments& ghosts);
   // lbm::node_moments at `cell`, from the first read since begin() in table `table`.
   const NodeMoments& moments(const PopulationField& f, std::size_t cell,
                              const std::array<double, 3>& body_force, int table = 0) {

@@ -1,6 +1,8 @@
 #pragma once
-// Which axes the step's halo exchange must send all 19 populations on (lbm::HaloPopulations):
-// where the moving-wall links may read a whole ghost node.
+// Which axes the step's halo exchange must send more than the crossing five on: where the
+// moving-wall links may read a whole ghost node. Only its moments are read, so the exchange
+// sends those (SphereCoupling::exchange_halo, FluidSolver::exchange_ghost_moments: four
+// values per ghost instead of the other 14 populations); all 19 would give the same result.
 #include <array>
 
 #include "coupling/mapping/sphere_mapping.h"
@@ -9,9 +11,9 @@
 
 namespace coupling {
 
-// Per axis 1 if this rank's links may read all populations of a ghost node that the
-// exchange fills along that axis, else 0 (to be summed over the ranks: every rank must
-// send the same populations).
+// Per axis 1 if this rank's links may read the moments of a ghost node that the exchange
+// fills along that axis, else 0 (to be summed over the ranks: every rank must send the
+// same).
 //
 // Only Mei-Luo-Shyy reads a whole node besides the link's own (owned) fluid node x: the
 // moments of its second node x - c_q (delta < 1/2, lbm/moving_wall/mei_luo_shyy.cpp). That
