@@ -147,7 +147,8 @@ void FixLbmPore::init() {
     lbm_pore::print_to_screen_and_log(screen, logfile,
                                       (lbm_pore::setup_summary(options_, *units_, frame_->dims, solver_->drive(),
                                                                update->dt, monitor_setup_.pore_diameter,
-                                                               solver_->bytes_per_node()) +
+                                                               solver_->bytes_per_node(),
+                                                               lbm_pore::thread_cores().threads) +
                                        threads.summary).c_str());
     if (!threads.warning.empty()) error->warning(FLERR, threads.warning.c_str());
   }

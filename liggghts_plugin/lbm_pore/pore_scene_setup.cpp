@@ -236,7 +236,7 @@ void check_neighbor_skin(const PoreOptions& o, double skin) {
 
 std::string setup_summary(const PoreOptions& o, const coupling::UnitConversion& units,
                           const std::array<int, 3>& dims, const lbm::FlowDrive& drive, double dt_dem,
-                          double pore_diameter, double bytes_per_node) {
+                          double pore_diameter, double bytes_per_node, int threads) {
   char text[1500];
   int n = std::snprintf(text, sizeof text,
                         "fix lbm/pore: lattice %d x %d x %d nodes (dx = %g), %s\n"
@@ -255,8 +255,11 @@ std::string setup_summary(const PoreOptions& o, const coupling::UnitConversion& 
   if (bytes_per_node > 0.0)
     std::snprintf(text + n, sizeof text - n,
                   "fix lbm/pore: memory %.0f bytes per lattice node (fluid %.0f, particle coupling %.0f)\n",
-                  bytes_per_node + kCouplingBytesPerNode, bytes_per_node, kCouplingBytesPerNode);
+                  bytes_per_node + coupling_bytes_per_node(threads), bytes_per_node,
+                  coupling_bytes_per_node(threads));
   return text;
 }
+
+double coupling_bytes_per_node(int threads) { return 8.0 + 36.0 * std::max(threads, 1) + 8.0 + 32.0; }
 
 }  // namespace lbm_pore

@@ -74,12 +74,14 @@ void check_neighbor_skin(const PoreOptions& options, double skin);
 
 // The lines printed at setup: lattice, time steps, tau, drive and its Mach number or
 // density difference, the moving-wall scheme and lubrication, and the memory per lattice
-// node (the fluid's, lbm::FluidSolver::bytes_per_node, plus the coupling's per-node arrays:
-// sphere mapping 8, moving-wall moment cache 36 and the refill's ghost densities 8 bytes, the
-// last allocated only where a rank or periodic neighbour exists; 0: not printed).
-constexpr double kCouplingBytesPerNode = 52.0;
+// node (the fluid's, lbm::FluidSolver::bytes_per_node, plus coupling_bytes_per_node;
+// bytes_per_node 0: not printed).
 std::string setup_summary(const PoreOptions& options, const coupling::UnitConversion& units,
                           const std::array<int, 3>& dims, const lbm::FlowDrive& drive, double dt_dem,
-                          double pore_diameter, double bytes_per_node);
+                          double pore_diameter, double bytes_per_node, int threads = 1);
+// The coupling's per-node arrays, at most: sphere mapping 8 bytes, one moving-wall moment
+// cache table of 36 per OpenMP thread, and where a rank or periodic neighbour exists the
+// refill's ghost densities 8 and the ghost nodes' moments 32 (SphereCoupling).
+double coupling_bytes_per_node(int threads);
 
 }  // namespace lbm_pore
