@@ -10,14 +10,11 @@
 #include <type_traits>
 #include <vector>
 
-#ifdef _OPENMP
-#include <omp.h>
-#endif
-
 #include "lbm/block_layout.h"
 #include "lbm/d3q19.h"
 #include "lbm/node_type.h"
 #include "lbm/population_field.h"
+#include "lbm/thread_team.h"
 
 namespace lbm::detail {
 
@@ -70,11 +67,7 @@ void for_plane_fluid_nodes_in_parallel(const BlockLayout& layout,
   const bool split = rows * layout.size((axis + 1) % 3) >= kMinParallelPlaneNodes;
 #pragma omp parallel if (split)
   {
-#ifdef _OPENMP
-    const int t = omp_get_thread_num(), nt = omp_get_num_threads();
-#else
-    const int t = 0, nt = 1;
-#endif
+    const auto [t, nt] = lbm::team_member();
     for_plane_rows(layout, node_type, axis, plane, rows * t / nt, rows * (t + 1) / nt, visit, ahead);
   }
 }

@@ -10,6 +10,7 @@
 #endif
 
 #include "lbm/node_type.h"
+#include "lbm/thread_team.h"
 
 namespace lbm {
 
@@ -105,11 +106,7 @@ FluidStateProblem check_fluid_state(const FluidSolver& solver, double max_speed)
   std::vector<FluidStateProblem> found(std::size_t(threads), FluidStateProblem{});
 #pragma omp parallel num_threads(threads)
   {
-#ifdef _OPENMP
-    const int t = omp_get_thread_num(), nt = omp_get_num_threads();
-#else
-    const int t = 0, nt = 1;
-#endif
+    const auto [t, nt] = lbm::team_member();
     found[std::size_t(t)] = first_problem(solver, max_speed, planes * t / nt, planes * (t + 1) / nt);
   }
   for (const FluidStateProblem& problem : found)

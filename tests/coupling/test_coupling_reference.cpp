@@ -11,6 +11,7 @@
 #include <omp.h>
 #endif
 
+#include "cases/scoped_threads.h"
 #include "cases/serial_flow.h"
 #include "coupling/boundary/sphere_links.h"
 #include "coupling/force/momentum_exchange.h"
@@ -52,6 +53,18 @@ std::unique_ptr<lbm::FluidSolver> solver_with_a_wall() {
       f.at(q, c) = lbm::D3Q19::w[q] * (1.0 + 0.01 * std::sin(0.37 * double(c) + 1.3 * q));
   return solver;
 }
+
+// The crowded spheres mapped on the solver with a wall, and their links.
+struct CrowdedLinks {
+  std::unique_ptr<lbm::FluidSolver> solver = solver_with_a_wall();
+  ParticleSet particles = crowded_spheres();
+  SphereCoupling coupling{*solver};
+  SphereLinks links;
+  CrowdedLinks() {
+    coupling.map_and_refill(particles.view(true));
+    build_sphere_links(coupling.mapping(), particles.view(true), solver->node_types(), links);
+  }
+};
 
 // The covered cells as a scan of every cell of every image's whole bounding box gives them.
 std::vector<std::size_t> covered_by_box_scan(const SphereMapping& m, const ParticleView& view,
@@ -206,48 +219,34 @@ TEST(CouplingReference, TwoThreadsGiveTheOneThreadStepBitForBit) {
 // once and blocks it leaves to the barrier, with 4 (about 17 blocks each, the lag 13) few or
 // none are corrected at once.
 TEST(CouplingReference, LinkSweepGivesTheSeparateStagesBitForBit) {
-#ifdef _OPENMP
-  const int before = omp_get_max_threads();
-  const int max_threads = 4;
-#else
-  const int max_threads = 1;
-#endif
+  cases::ScopedThreads threads_of_test(1);
   for (auto scheme : {lbm::MovingWallScheme::kMeiLuoShyy, lbm::MovingWallScheme::kBouzidi,
                       lbm::MovingWallScheme::kBounceBack}) {
-    auto solver = solver_with_a_wall();
-    const ParticleSet p = crowded_spheres();
-    SphereCoupling coupling(*solver);
-    coupling.map_and_refill(p.view(true));
-    SphereLinks links;
-    build_sphere_links(coupling.mapping(), p.view(true), solver->node_types(), links);
-    lbm::PopulationField& f = solver->populations();
+    CrowdedLinks crowded;
+    lbm::FluidSolver& solver = *crowded.solver;
+    const std::vector<lbm::BoundaryLink>& links = crowded.links.links;
+    lbm::PopulationField& f = solver.populations();
     const lbm::PopulationField::Storage start = f.raw();
-    const double rho0 = solver->parameters().rho0;
+    const double rho0 = solver.parameters().rho0;
 
-#ifdef _OPENMP
-    omp_set_num_threads(1);
-#endif
+    threads_of_test.set(1);
     lbm::moving_wall::MomentCache cache;
     std::vector<lbm::LinkPopulations> stages_populations;
     std::vector<double> stages_defects;
-    lbm::apply_links(links.links, scheme, *solver, &cache, nullptr, &stages_populations);
-    const auto stages = lbm::moving_wall::link_mass_defect(links.links, rho0, stages_populations,
-                                                           &stages_defects);
-    lbm::moving_wall::restore_link_mass(links.links, solver->layout(), solver->node_types(),
-                                        stages_defects, f);
+    lbm::apply_links(links, scheme, solver, &cache, nullptr, &stages_populations);
+    const auto stages = lbm::moving_wall::link_mass_defect(links, rho0, stages_populations, &stages_defects);
+    lbm::moving_wall::restore_link_mass(links, solver.layout(), solver.node_types(), stages_defects, f);
     const lbm::PopulationField::Storage after_stages = f.raw();
 
-    for (int threads = 1; threads <= max_threads; ++threads) {
-#ifdef _OPENMP
-      omp_set_num_threads(threads);
-#endif
-      ASSERT_GE(links.links.size(), 256u * std::size_t(threads));  // lbm::link_threads splits them
+    for (int threads = 1; threads <= cases::ScopedThreads::most(4); ++threads) {
+      threads_of_test.set(threads);
+      ASSERT_GE(links.size(), 256u * std::size_t(threads));  // lbm::link_threads splits them
       f.raw() = start;
       std::vector<lbm::LinkPopulations> sweep_populations;
       std::vector<double> sweep_defects;
       lbm::moving_wall::LinkSweep order;
       const auto swept = lbm::moving_wall::apply_links_and_restore_mass(
-          links.links, scheme, *solver, cache, order, sweep_populations, sweep_defects);
+          links, scheme, solver, cache, order, sweep_populations, sweep_defects);
       ASSERT_GT(order.lag(), 1u);
       const std::string what = std::string(lbm::moving_wall::label(scheme)) + ", " +
                                std::to_string(threads) + " threads";
@@ -263,23 +262,15 @@ TEST(CouplingReference, LinkSweepGivesTheSeparateStagesBitForBit) {
       EXPECT_NE(stages.absolute, 0.0);
     }
   }
-#ifdef _OPENMP
-  omp_set_num_threads(before);
-#endif
 }
 
 // The sweep's ranges: whole blocks, in order, covering every block, each holding about its
 // share of the links.
 TEST(CouplingReference, LinkSweepSharesCoverEveryBlockOnce) {
-  auto solver = solver_with_a_wall();
-  const ParticleSet p = crowded_spheres();
-  SphereCoupling coupling(*solver);
-  coupling.map_and_refill(p.view(true));
-  SphereLinks links;
-  build_sphere_links(coupling.mapping(), p.view(true), solver->node_types(), links);
+  const CrowdedLinks crowded;
   lbm::moving_wall::LinkSweep order;
-  order.sort(links.links, solver->layout());
-  const std::size_t n = links.links.size();
+  order.sort(crowded.links.links, crowded.solver->layout());
+  const std::size_t n = crowded.links.links.size();
   for (int shares = 1; shares <= 5; ++shares) {
     EXPECT_EQ(order.block_of_share(0, shares), 0u);
     EXPECT_EQ(order.block_of_share(shares, shares), order.num_blocks());

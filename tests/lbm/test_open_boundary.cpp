@@ -2,31 +2,39 @@
 // flux conservation through the paper's pore constriction.
 #include <gtest/gtest.h>
 
-#ifdef _OPENMP
-#include <omp.h>
-#endif
-
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <memory>
 
+#include "cases/scoped_threads.h"
 #include "cases/serial_flow.h"
 #include "lbm/d3q19.h"
 #include "lbm/macroscopic.h"
 #include "lbm/node_type.h"
 #include "lbm/pore_scene.h"
 
-TEST(OpenBoundary, FluxIsConservedThroughThePoreConstriction) {
-  // inlet, free, pore, outlet lengths, width, pore diameter (cells)
-  lbm::PoreSceneSpec spec{6, 6, 8, 8, 16, 10};
+namespace {
+// The pore scene, periodic across the flow, driven by an inlet velocity (lattice units).
+std::unique_ptr<lbm::FluidSolver> velocity_driven_pore(const lbm::PoreSceneSpec& spec, double tau,
+                                                       double inlet_velocity) {
   const auto g = lbm::make_pore_scene(spec);
   lbm::FluidParameters p;
-  p.tau = 1.0;
+  p.tau = tau;
   p.periodic = {false, true, true};
   lbm::FlowDrive drive;
   drive.kind = lbm::FlowDrive::kInletVelocity;
-  drive.inlet_velocity = 0.005;
-  lbm::FluidSolver solver(g, p, drive, cases::serial_decomposition(g, p.periodic));
+  drive.inlet_velocity = inlet_velocity;
+  return std::make_unique<lbm::FluidSolver>(g, p, drive, cases::serial_decomposition(g, p.periodic));
+}
+}  // namespace
+
+TEST(OpenBoundary, FluxIsConservedThroughThePoreConstriction) {
+  // inlet, free, pore, outlet lengths, width, pore diameter (cells)
+  const lbm::PoreSceneSpec spec{6, 6, 8, 8, 16, 10};
+  const auto owned = velocity_driven_pore(spec, 1.0, 0.005);
+  lbm::FluidSolver& solver = *owned;
+  const lbm::FlowDrive& drive = solver.drive();
   cases::run_to_steady(solver, 1e-8, 40000, 200);
   // The inlet imposes u_in on every node: inflow of mass = rho_in u_in A.
   const double rho_in = lbm::plane_mean_pressure(solver, 0, 0) * 3.0;
@@ -119,24 +127,14 @@ TEST(Stability, TheFirstBadNodeInScanOrderIsReportedOnAnyNumberOfThreads) {
   solver.populations().at(2, solver.layout().cell(4, 3, 7)) = std::nan("");
   solver.populations().at(5, solver.layout().cell(1, 4, 0)) = -2.0;  // negative density
   solver.populations().at(1, solver.layout().cell(0, 1, 7)) = std::nan("");
-#ifdef _OPENMP
-  const int before = omp_get_max_threads();
-  const int most = 4;
-#else
-  const int most = 1;
-#endif
-  for (int threads = 1; threads <= most; ++threads) {
-#ifdef _OPENMP
-    omp_set_num_threads(threads);
-#endif
+  cases::ScopedThreads threads_of_test(1);
+  for (int threads = 1; threads <= cases::ScopedThreads::most(4); ++threads) {
+    threads_of_test.set(threads);
     const auto problem = lbm::check_fluid_state(solver, 0.3);
     ASSERT_TRUE(problem.found) << threads;
     EXPECT_EQ(problem.node, (std::array<int, 3>{1, 4, 0})) << threads << " threads";
     EXPECT_LT(problem.density, 0.0);
   }
-#ifdef _OPENMP
-  omp_set_num_threads(before);
-#endif
 }
 
 // The masses booked through the open faces (FluidSolver::open_face_mass, the populations
@@ -197,30 +195,15 @@ double plane_pressure_by_loop(const lbm::FluidSolver& solver, int x) {
 // threshold (24 x 24 nodes), ghost planes of the periodic axes above the copies' threshold,
 // more static wall links than their split threshold, on `threads` OpenMP threads.
 StepOutcome pore_steps(int threads) {
-#ifdef _OPENMP
-  const int before = omp_get_max_threads();
-  omp_set_num_threads(threads);
-#else
-  (void)threads;
-#endif
-  lbm::PoreSceneSpec spec{8, 8, 24, 24, 24, 15};
-  const auto g = lbm::make_pore_scene(spec);
-  lbm::FluidParameters p;
-  p.tau = 0.8;
-  p.periodic = {false, true, true};
-  lbm::FlowDrive drive;
-  drive.kind = lbm::FlowDrive::kInletVelocity;
-  drive.inlet_velocity = 0.02;
-  lbm::FluidSolver solver(g, p, drive, cases::serial_decomposition(g, p.periodic));
-  for (int s = 0; s < 30; ++s) solver.step();
+  const cases::ScopedThreads threads_of_run(threads);
+  const lbm::PoreSceneSpec spec{8, 8, 24, 24, 24, 15};
+  const auto solver = velocity_driven_pore(spec, 0.8, 0.02);
+  for (int s = 0; s < 30; ++s) solver->step();
   StepOutcome out;
-  out.populations = solver.populations().raw();
-  out.pressure_loss = lbm::pressure_loss(solver);
-  out.reference_pressure_loss =
-      plane_pressure_by_loop(solver, 0) - plane_pressure_by_loop(solver, g.dims()[0] - 1);
-#ifdef _OPENMP
-  omp_set_num_threads(before);
-#endif
+  out.populations = solver->populations().raw();
+  out.pressure_loss = lbm::pressure_loss(*solver);
+  out.reference_pressure_loss = plane_pressure_by_loop(*solver, 0) -
+                                plane_pressure_by_loop(*solver, solver->layout().size(0) - 1);
   return out;
 }
 }  // namespace

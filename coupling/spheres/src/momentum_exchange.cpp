@@ -2,11 +2,8 @@
 
 #include <algorithm>
 
-#ifdef _OPENMP
-#include <omp.h>
-#endif
-
 #include "lbm/d3q19.h"
+#include "lbm/thread_team.h"
 
 namespace coupling {
 
@@ -92,11 +89,8 @@ void sum_all_links(const SphereLinks& sl, const std::vector<lbm::LinkPopulations
   // Blocks of whole particles, one per thread: no two threads add to one particle.
 #pragma omp parallel num_threads(threads)
   {
-#ifdef _OPENMP
-    const std::size_t t = std::size_t(omp_get_thread_num()), nt = std::size_t(omp_get_num_threads());
-#else
-    const std::size_t t = 0, nt = 1;
-#endif
+    const lbm::TeamMember member = lbm::team_member();
+    const std::size_t t = std::size_t(member.index), nt = std::size_t(member.size);
     sum_links<kGalilean>(sl, populations, particle_boundary(sl, n * t / nt),
                          particle_boundary(sl, n * (t + 1) / nt), rho0, loads);
   }

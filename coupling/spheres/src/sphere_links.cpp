@@ -9,6 +9,7 @@
 
 #include "lbm/d3q19.h"
 #include "lbm/node_type.h"
+#include "lbm/thread_team.h"
 
 namespace coupling {
 
@@ -120,11 +121,7 @@ void build_sphere_links(const SphereMapping& mapping, const ParticleView& view,
   scratch->resize(std::size_t(threads));
 #pragma omp parallel num_threads(threads)
   {
-#ifdef _OPENMP
-    const int t = omp_get_thread_num(), nt = omp_get_num_threads();
-#else
-    const int t = 0, nt = 1;
-#endif
+    const auto [t, nt] = lbm::team_member();
     SphereLinks& part = t == 0 ? out : (*scratch)[std::size_t(t)];
     if (t > 0) part.clear();
     append_links(mapping, view, node_type, sphere_of_share(mapping, n, std::size_t(t), std::size_t(nt)),

@@ -3,14 +3,12 @@
 // lbm/moving_wall/moving_wall_scheme.h, and sweep, in link_sweep.h); each scheme's source
 // file instantiates them, so the per-link formula is inlined and no link branches on the
 // scheme.
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 #include "lbm/link_boundary.h"
 #include "lbm/moving_wall/link_mass.h"
 #include "lbm/moving_wall/link_sweep.h"
 #include "lbm/moving_wall/moving_wall_scheme.h"
+#include "lbm/thread_team.h"
 
 namespace lbm::moving_wall {
 
@@ -128,11 +126,7 @@ void sweep(const std::vector<BoundaryLink>& links, const LinkSweep& order, const
   }
 #pragma omp parallel num_threads(threads)
   {
-#ifdef _OPENMP
-    const int t = omp_get_thread_num(), nt = omp_get_num_threads();
-#else
-    const int t = 0, nt = 1;
-#endif
+    const auto [t, nt] = lbm::team_member();
     const std::size_t first = order.block_of_share(t, nt), last = order.block_of_share(t + 1, nt);
     // The outer ends of the first and last ranges border no other thread.
     const std::size_t safe_first = t == 0 ? first : first + lag;
@@ -161,11 +155,7 @@ void apply(const std::vector<BoundaryLink>& links, const Scheme& scheme, const B
   }
 #pragma omp parallel num_threads(threads)
   {
-#ifdef _OPENMP
-    const int t = omp_get_thread_num(), nt = omp_get_num_threads();
-#else
-    const int t = 0, nt = 1;
-#endif
+    const auto [t, nt] = lbm::team_member();
     apply_range(links, n * std::size_t(t) / std::size_t(nt), n * std::size_t(t + 1) / std::size_t(nt),
                 for_thread(scheme, t), layout, f, momentum, populations);
   }
