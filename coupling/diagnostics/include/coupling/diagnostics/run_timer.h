@@ -19,8 +19,8 @@ class RunTimer {
 
   // Two lines ending in newlines, or "" when no fluid step was run. `stages` are the
   // coupling's stage times since the lattice was built; a third line says how often the
-  // coupled steps' halo exchange sent all 19 populations per axis, where `halo` is given
-  // and counted a step.
+  // coupled steps' halo exchange sent the ghost nodes' moments per axis, where `halo` is
+  // given and counted a step.
   std::string report(double now, const StageTimes& stages, const HaloCounts* halo = nullptr) const;
 
  private:
