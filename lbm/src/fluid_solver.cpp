@@ -183,17 +183,25 @@ void FluidSolver::exchange_ghost_densities(std::vector<double>& ghost_density) {
 // The owned planes' moments, then the scalar sweeps along the marked axes carry them as
 // exchange_halo() would carry the populations they come from (exchange_ghost_densities).
 void FluidSolver::exchange_ghost_moments(const std::array<bool, 3>& axes,
-                                         moving_wall::GhostMoments& ghosts) {
+                                         moving_wall::GhostMoments& ghosts,
+                                         const std::vector<std::size_t>* sent,
+                                         const std::vector<std::size_t>* received) {
   auto& c = ghosts.component;
   for (auto& component : c) component.resize(layout_.num_cells());
-  ghosts.cells.clear();
-  for (int a = 0; a < 3; ++a) {
-    if (!axes[a]) continue;
-    for (const std::size_t cell : halo_->sent_planes(a)) {
+  const auto compute = [&](const std::vector<std::size_t>& cells) {
+    for (const std::size_t cell : cells) {
       const NodeMoments m = node_moments(f_, cell, parameters_.body_force);
       c[0][cell] = m.rho;
       for (int b = 0; b < 3; ++b) c[1 + b][cell] = m.u[b];
     }
+  };
+  if (sent) compute(*sent);
+  if (received) ghosts.cells.assign(received->begin(), received->end());
+  else ghosts.cells.clear();
+  for (int a = 0; a < 3; ++a) {
+    if (!axes[a]) continue;
+    if (!sent) compute(halo_->sent_planes(a));
+    if (received) continue;
     const auto& filled = halo_->ghost_planes(a);
     ghosts.cells.insert(ghosts.cells.end(), filled.begin(), filled.end());
   }

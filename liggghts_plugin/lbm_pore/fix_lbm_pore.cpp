@@ -2,6 +2,7 @@
 
 #include <mpi.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -392,6 +393,7 @@ void FixLbmPore::fluid_step() {
   long long count = static_cast<long long>(particles_.num_owned()) +
                     static_cast<long long>(coupling_->mapping().moving_cells().size());
   MPI_Allreduce(MPI_IN_PLACE, &count, 1, MPI_LONG_LONG, MPI_SUM, world);
+  if (count > 0) share_particle_reach();
   if (count == 0) {
     solver_->step();
   } else {
@@ -415,6 +417,18 @@ void FixLbmPore::fluid_step() {
   if (vtk_ && fluid_steps_ % options_.vtk_every == 0)
     vtk_->write(*solver_, units_->time_to_physical(double(fluid_steps_)));
   timer_.add(coupling::RunTimer::kDiagnostics, MPI_Wtime() - diagnostics_start);
+}
+
+// The halo carries the ghost moments only near the spheres when every rank's view holds each
+// sphere within its radius + 2.5 cells (SphereCoupling::set_particle_reach): LIGGGHTS's ghost
+// cutoff against the largest radius of the group, both in cells.
+void FixLbmPore::share_particle_reach() {
+  double largest = 0.0;
+  for (int i = 0; i < atom->nlocal; ++i)
+    if (atom->mask[i] & groupbit) largest = std::max(largest, atom->radius[i]);
+  MPI_Allreduce(MPI_IN_PLACE, &largest, 1, MPI_DOUBLE, MPI_MAX, world);
+  const double cutoff = std::min({comm->cutghost[0], comm->cutghost[1], comm->cutghost[2]});
+  coupling_->set_particle_reach(cutoff / options_.dx, largest / options_.dx);
 }
 
 // The loads of the step, in script units, onto the atoms they belong to; ghosts' shares go

@@ -85,6 +85,7 @@ class FixLbmPore : public Fix {
   void find_gravity();
   void fluid_step();
   void gather_particles(bool advance);
+  void share_particle_reach();
   void store_loads(bool coupled);
   void collect_group_pairs();
   void find_walls();

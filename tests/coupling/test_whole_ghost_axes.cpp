@@ -7,8 +7,12 @@
 // tests/lbm_parallel/test_sphere_halo_mpi.cpp.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "cases/serial_flow.h"
 #include "cases/staged_step.h"
+#include "coupling/boundary/ghost_moment_cells.h"
 #include "coupling/boundary/whole_ghost_axes.h"
 #include "coupling/sphere_coupling.h"
 
@@ -58,9 +62,12 @@ TEST(WholeGhostAxes, EveryPeriodicAxisOfAnEdgeGhost) {
 
 // The coupled step (SphereCoupling::step, the flags of whole_ghost_axes) against the same
 // stages with all 19 populations exchanged: bit for bit, for a sphere whose links from the
-// face plane x = 0 have fractions below 1/2 (Mei-Luo-Shyy reads the ghost x = -1). The
+// face plane x = 0 have fractions below 1/2 (Mei-Luo-Shyy reads the ghost x = -1), with the
+// ghost moments on the whole planes and only near the spheres (set_particle_reach). The
 // crossing five alone change the result: the case does read a whole ghost node.
-TEST(WholeGhostAxes, CoupledStepEqualsTheExchangeOfAll19) {
+class WholeGhostAxesMoments : public ::testing::TestWithParam<bool> {};
+
+TEST_P(WholeGhostAxesMoments, CoupledStepEqualsTheExchangeOfAll19) {
   const std::array<int, 3> dims{16, 12, 10};
   const std::array<bool, 3> periodic{true, true, false};
   const std::array<double, 3> force{2e-5, -1e-5, 0.0};
@@ -74,6 +81,7 @@ TEST(WholeGhostAxes, CoupledStepEqualsTheExchangeOfAll19) {
   };
   for (auto* s : {run.get(), all.get(), crossing.get()}) s->initialise_equilibrium(state);
   SphereCoupling c_run(*run), c_all(*all), c_crossing(*crossing);
+  if (GetParam()) c_run.set_particle_reach(1e9, 2.2);  // the view holds every particle
   ParticleSet particles;
   // Surface at x = 0.2 ... 0.35 over the run: links from x = 0 into x = 1 with delta < 1/2.
   const Vec3 x0{2.4, 6.3, 4.7}, v{0.005, 0.002, -0.003};
@@ -94,4 +102,53 @@ TEST(WholeGhostAxes, CoupledStepEqualsTheExchangeOfAll19) {
   EXPECT_EQ(raised, 30);
   EXPECT_EQ(c_run.halo_counts().moments[2], 0);  // z is not periodic: never raised
   EXPECT_GT(cases::max_population_difference(*crossing, *all), 1e-9);
+}
+
+INSTANTIATE_TEST_SUITE_P(WholePlanesAndNearSpheres, WholeGhostAxesMoments, ::testing::Bool());
+
+// The cells near the spheres: of the planes the sweeps send and fill along a marked axis,
+// exactly those within R + kGhostMomentMargin of a sphere's centre (minimum image), against
+// a test of every cell of those planes.
+TEST(GhostMomentCells, AreTheCellsOfTheExchangedPlanesNearASphere) {
+  const auto solver = cases::make_solver({16, 12, 10}, {true, true, false});
+  ParticleSet particles;
+  particles.add(1, {1.2, 6.3, 4.7}, {0.0, 0.0, 0.0}, 2.2);   // near x = 0
+  particles.add(2, {14.9, 0.4, 6.1}, {0.0, 0.0, 0.0}, 1.7);  // near x = 15 and y = 0, 11
+  particles.add(3, {8.0, 6.0, 5.0}, {0.0, 0.0, 0.0}, 2.0);   // near no face plane
+  SphereMapping mapping(solver->layout(), PeriodicBox::from(solver->decomposition()));
+  mapping.update(particles.view(), solver->node_types());
+  GhostMomentCells cells;
+  ghost_moment_cells(mapping, particles.view(), *solver, {true, true, false}, cells);
+  const lbm::BlockLayout& layout = solver->layout();
+  std::vector<std::size_t> want_sent, want_received;
+  for (int a = 0; a < 2; ++a)
+    for (int side = 0; side < 2; ++side) {
+      const int planes[2] = {side == 0 ? 0 : layout.size(a) - 1, side == 0 ? -1 : layout.size(a)};
+      for (int which = 0; which < 2; ++which) {
+        const int b = a == 0 ? 1 : 0, c = a == 2 ? 1 : 2;
+        int ijk[3];
+        ijk[a] = planes[which];
+        for (int v = -1; v <= layout.size(c); ++v)
+          for (int u = -1; u <= layout.size(b); ++u) {
+            ijk[b] = u;
+            ijk[c] = v;
+            const std::size_t cell = layout.cell(ijk[0], ijk[1], ijk[2]);
+            bool near = false;
+            for (std::size_t p = 0; p < particles.size(); ++p) {
+              const Vec3 d = mapping.box().displacement(particles.view().x(p), mapping.node_position(cell));
+              near = near || std::sqrt(dot(d, d)) <= particles.view().r(p) + kGhostMomentMargin;
+            }
+            if (near) (which == 0 ? want_sent : want_received).push_back(cell);
+          }
+      }
+    }
+  auto unique = [](std::vector<std::size_t> v) {
+    std::sort(v.begin(), v.end());
+    v.erase(std::unique(v.begin(), v.end()), v.end());
+    return v;
+  };
+  EXPECT_EQ(unique(cells.sent), unique(want_sent));
+  EXPECT_EQ(unique(cells.received), unique(want_received));
+  EXPECT_GT(unique(cells.sent).size(), 20u);
+  EXPECT_LT(unique(cells.sent).size(), 2u * (14u * 12u + 18u * 12u));  // fewer than the whole planes
 }

@@ -63,6 +63,8 @@ void SphereCoupling::map_and_refill(const ParticleView& view) {
       ghost_moment_axes_[a] = counts[1 + a] > 0;
       halo_counts_.moments[a] += ghost_moment_axes_[a];
     }
+    if (ghost_moments_near_spheres_ && (ghost_moment_axes_[0] || ghost_moment_axes_[1] || ghost_moment_axes_[2]))
+      ghost_moment_cells(mapping_, view, solver_, ghost_moment_axes_, ghost_moment_cells_);
     ++halo_counts_.steps;
     if (uncovered > 0) solver_.exchange_ghost_densities(ghost_density_);
     mass_ = refill_uncovered(change, mapping_, view, options_.refill, solver_,
@@ -74,7 +76,16 @@ void SphereCoupling::map_and_refill(const ParticleView& view) {
 void SphereCoupling::exchange_halo() {
   solver_.exchange_halo(lbm::HaloPopulations::crossing());
   ghost_moments_fresh_ = ghost_moment_axes_[0] || ghost_moment_axes_[1] || ghost_moment_axes_[2];
-  if (ghost_moments_fresh_) solver_.exchange_ghost_moments(ghost_moment_axes_, ghost_moments_);
+  if (!ghost_moments_fresh_) return;
+  if (ghost_moments_near_spheres_)
+    solver_.exchange_ghost_moments(ghost_moment_axes_, ghost_moments_, &ghost_moment_cells_.sent,
+                                   &ghost_moment_cells_.received);
+  else
+    solver_.exchange_ghost_moments(ghost_moment_axes_, ghost_moments_);
+}
+
+void SphereCoupling::set_particle_reach(double view_reach, double radius_bound) {
+  ghost_moments_near_spheres_ = view_reach >= radius_bound + kGhostMomentMargin;
 }
 
 void SphereCoupling::apply_moving_walls_and_force(const ParticleView& view) {

@@ -83,11 +83,16 @@ class FluidSolver {
   void exchange_ghost_densities(std::vector<double>& ghost_density);
   // The moments (node_moments, with the body force) that exchange_halo() with all 19
   // populations along the axes marked in `axes` would let a reader compute at the ghosts of
-  // those axes, into `ghosts` (components sized num_cells() on first use; `ghosts.cells` the
-  // ghosts filled), while four values per cell travel instead of 19 populations. Only the
-  // ghosts of a marked axis are filled (edge ghosts when both their axes are marked, as the
-  // population exchange fills them). Collective; every rank must pass the same `axes`.
-  void exchange_ghost_moments(const std::array<bool, 3>& axes, moving_wall::GhostMoments& ghosts);
+  // those axes, into `ghosts` (components sized num_cells() on first use), while four values
+  // per cell travel instead of 19 populations. Only the ghosts of a marked axis are filled
+  // (edge ghosts when both their axes are marked, as the population exchange fills them).
+  // `sent`: the cells of the sent planes whose moments are computed (every cell of those
+  // planes when null; a ghost then holds its owner's moments where the owner computed them);
+  // `ghosts.cells` is set to `received`, the ghosts the reader will read (every cell of the
+  // filled planes when null). Collective; every rank must pass the same `axes`.
+  void exchange_ghost_moments(const std::array<bool, 3>& axes, moving_wall::GhostMoments& ghosts,
+                              const std::vector<std::size_t>* sent = nullptr,
+                              const std::vector<std::size_t>* received = nullptr);
   // Whether `cell` is a ghost that exchange_halo() fills (HaloExchange::is_exchanged_ghost).
   bool is_exchanged_ghost(std::size_t cell) const;
   void apply_wall_bounce_back();

@@ -4,6 +4,7 @@
 // with the link mass correction -> momentum exchange -> open boundaries -> collide_stream.
 #include <chrono>
 
+#include "coupling/boundary/ghost_moment_cells.h"
 #include "coupling/boundary/sphere_links.h"
 #include "coupling/boundary/whole_ghost_axes.h"
 #include "coupling/force/momentum_exchange.h"
@@ -64,6 +65,13 @@ class SphereCoupling {
   // apply_moving_walls_and_force reads.
   void exchange_halo();
   void apply_moving_walls_and_force(const ParticleView& view);
+  // How far (cells) beyond this rank's owned box the views passed to step() hold every
+  // particle, and a bound of every particle's radius (cells). When the first is at least
+  // the second plus kGhostMomentMargin, every rank knows the spheres whose links read a
+  // ghost's moments, and exchange_halo computes and reads the moments only near the spheres
+  // (ghost_moment_cells.h); otherwise (the default, nothing known) on the whole planes. The
+  // result is the same either way.
+  void set_particle_reach(double view_reach, double radius_bound);
 
   const Vec3& force(std::size_t p) const { return loads_.force[p]; }
   const Vec3& torque(std::size_t p) const { return loads_.torque[p]; }
@@ -112,6 +120,8 @@ class SphereCoupling {
   std::array<bool, 3> ghost_moment_axes_{false, false, false};
   lbm::moving_wall::GhostMoments ghost_moments_;
   bool ghost_moments_fresh_ = false;
+  bool ghost_moments_near_spheres_ = false;  // set_particle_reach
+  GhostMomentCells ghost_moment_cells_;      // this step's, where near spheres; reused
   StageTimes times_;
   HaloCounts halo_counts_;
 };
