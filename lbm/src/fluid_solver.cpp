@@ -195,16 +195,15 @@ void FluidSolver::exchange_ghost_moments(const std::array<bool, 3>& axes,
       for (int b = 0; b < 3; ++b) c[1 + b][cell] = m.u[b];
     }
   };
-  if (sent) compute(*sent);
-  if (received) ghosts.cells.assign(received->begin(), received->end());
-  else ghosts.cells.clear();
+  ghosts.cells.clear();
   for (int a = 0; a < 3; ++a) {
     if (!axes[a]) continue;
     if (!sent) compute(halo_->sent_planes(a));
-    if (received) continue;
-    const auto& filled = halo_->ghost_planes(a);
-    ghosts.cells.insert(ghosts.cells.end(), filled.begin(), filled.end());
+    if (!received) ghosts.cells.insert(ghosts.cells.end(), halo_->ghost_planes(a).begin(),
+                                       halo_->ghost_planes(a).end());
   }
+  if (sent) compute(*sent);
+  if (received) ghosts.cells.assign(received->begin(), received->end());
   double* fields[4] = {c[0].data(), c[1].data(), c[2].data(), c[3].data()};
   halo_->exchange_scalars(fields, 4, axes);
 }

@@ -40,15 +40,6 @@ void ghost_moment_cells(const SphereMapping& mapping, const ParticleView& view,
   out.sent.clear();
   out.received.clear();
   const lbm::BlockLayout& layout = mapping.layout();
-  const PeriodicBox& box = mapping.box();
-  const auto& lo = layout.owned().lo;
-  // Periodic images -L, 0, +L on periodic axes, as the mapping takes them.
-  int shifts[3][3], num_shifts[3];
-  for (int k = 0; k < 3; ++k) {
-    num_shifts[k] = 0;
-    for (int s = -1; s <= 1; ++s)
-      if (s == 0 || box.periodic[k]) shifts[k][num_shifts[k]++] = s;
-  }
   for (int a = 0; a < 3; ++a) {
     if (!axes[a]) continue;
     const int b = a == 0 ? 1 : 0, c = a == 2 ? 1 : 2;
@@ -57,17 +48,11 @@ void ghost_moment_cells(const SphereMapping& mapping, const ParticleView& view,
       const int sent_plane = side == 0 ? 0 : layout.size(a) - 1;
       const int ghost_plane = side == 0 ? -1 : layout.size(a);
       for (std::size_t p = 0; p < view.num_total; ++p) {
-        const Vec3 x = view.x(p);
         const double reach = view.r(p) + kGhostMomentMargin;
-        for (int sz = 0; sz < num_shifts[2]; ++sz)
-          for (int sy = 0; sy < num_shifts[1]; ++sy)
-            for (int sx = 0; sx < num_shifts[0]; ++sx) {
-              const int s[3] = {shifts[0][sx], shifts[1][sy], shifts[2][sz]};
-              double centre[3];
-              for (int k = 0; k < 3; ++k) centre[k] = x[k] + s[k] * box.length[k] - lo[k];
-              add_disc(layout, a, b, c, sent_plane, centre, reach, out.sent);
-              add_disc(layout, a, b, c, ghost_plane, centre, reach, out.received);
-            }
+        mapping.for_each_local_image(view.x(p), [&](const double centre[3]) {
+          add_disc(layout, a, b, c, sent_plane, centre, reach, out.sent);
+          add_disc(layout, a, b, c, ghost_plane, centre, reach, out.received);
+        });
       }
     }
   }

@@ -92,27 +92,9 @@ void SphereMapping::update(const ParticleView& view, const std::vector<std::uint
   surface_begin_.assign(view.num_total + 1, 0);
   for (std::size_t cell : previous_) owner_[cell] = -1;
 
-  const auto& lo = layout_.owned().lo;
-  // Periodic images -L, 0, +L on periodic axes; only those reaching this block matter.
-  int shifts[3][3], num_shifts[3];
-  for (int a = 0; a < 3; ++a) {
-    num_shifts[a] = 0;
-    for (int s = -1; s <= 1; ++s) {
-      if (s != 0 && !box_.periodic[a]) continue;
-      shifts[a][num_shifts[a]++] = s;
-    }
-  }
   for (std::size_t p = 0; p < view.num_total; ++p) {
-    const Vec3 centre = view.x(p);
     const double R = view.r(p);
-    for (int sz = 0; sz < num_shifts[2]; ++sz)
-      for (int sy = 0; sy < num_shifts[1]; ++sy)
-        for (int sx = 0; sx < num_shifts[0]; ++sx) {
-          const int s[3] = {shifts[0][sx], shifts[1][sy], shifts[2][sz]};
-          double c[3];
-          for (int a = 0; a < 3; ++a) c[a] = centre[a] + s[a] * box_.length[a] - lo[a];  // local
-          map_image(int(p), c, R, node_type, change);
-        }
+    for_each_local_image(view.x(p), [&](const double c[3]) { map_image(int(p), c, R, node_type, change); });
     surface_begin_[p + 1] = surface_.size();
   }
   for (std::size_t cell : previous_) {

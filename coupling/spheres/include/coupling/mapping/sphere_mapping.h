@@ -52,6 +52,27 @@ class SphereMapping {
   std::size_t num_mapped_particles() const { return surface_begin_.empty() ? 0 : surface_begin_.size() - 1; }
   // Global position of a local cell.
   Vec3 node_position(std::size_t cell) const;
+  // visit(c) with the local coordinates c[3] (cell (i, j, k) at (i, j, k)) of `centre` and
+  // of its periodic images -L and +L on each periodic axis, in z, y, x order of the shifts:
+  // the images update() maps (only those reaching the block add cells).
+  template <class Visit>
+  void for_each_local_image(const Vec3& centre, Visit&& visit) const {
+    int shifts[3][3], num_shifts[3];
+    for (int a = 0; a < 3; ++a) {
+      num_shifts[a] = 0;
+      for (int s = -1; s <= 1; ++s)
+        if (s == 0 || box_.periodic[a]) shifts[a][num_shifts[a]++] = s;
+    }
+    const auto& lo = layout_.owned().lo;
+    for (int sz = 0; sz < num_shifts[2]; ++sz)
+      for (int sy = 0; sy < num_shifts[1]; ++sy)
+        for (int sx = 0; sx < num_shifts[0]; ++sx) {
+          const int s[3] = {shifts[0][sx], shifts[1][sy], shifts[2][sz]};
+          double c[3];
+          for (int a = 0; a < 3; ++a) c[a] = centre[a] + s[a] * box_.length[a] - lo[a];
+          visit(static_cast<const double*>(c));
+        }
+  }
   const lbm::BlockLayout& layout() const { return layout_; }
   const PeriodicBox& box() const { return box_; }
 
