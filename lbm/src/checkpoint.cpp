@@ -1,12 +1,15 @@
 #include "lbm/checkpoint.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <thread>
+#include <vector>
 
 #include "lbm/collide_stream.h"
 #include "lbm/d3q19.h"
@@ -134,6 +137,36 @@ void release_moving_nodes(FluidSolver& solver) {
     types[cell] = kFluid;
     for (int q = 0; q < D3Q19::Q; ++q) f.at(q, cell) = equilibrium(q, 1.0, {0.0, 0.0, 0.0});
   }
+}
+
+}  // namespace lbm
+
+namespace lbm {
+
+int prune_checkpoints(const std::string& prefix, int rank, int keep) {
+  if (keep <= 0) return 0;
+  namespace fs = std::filesystem;
+  const fs::path prefix_path(prefix);
+  const fs::path folder = prefix_path.has_parent_path() ? prefix_path.parent_path() : fs::path(".");
+  const std::string stem = prefix_path.filename().string() + ".";
+  const std::string rank_suffix = "." + std::to_string(rank);
+  std::vector<std::pair<long long, fs::path>> found;  // (step, file)
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(folder, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name.size() <= stem.size() + rank_suffix.size() || name.compare(0, stem.size(), stem) != 0 ||
+        name.compare(name.size() - rank_suffix.size(), rank_suffix.size(), rank_suffix) != 0)
+      continue;
+    const std::string step = name.substr(stem.size(), name.size() - stem.size() - rank_suffix.size());
+    if (step.empty() || step.find_first_not_of("0123456789") != std::string::npos) continue;
+    found.emplace_back(std::stoll(step), entry.path());
+  }
+  if (static_cast<int>(found.size()) <= keep) return 0;
+  std::sort(found.begin(), found.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  int deleted = 0;
+  for (std::size_t i = static_cast<std::size_t>(keep); i < found.size(); ++i)
+    if (fs::remove(found[i].second, ec)) ++deleted;
+  return deleted;
 }
 
 }  // namespace lbm

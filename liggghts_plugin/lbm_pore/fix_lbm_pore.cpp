@@ -192,7 +192,7 @@ void FixLbmPore::build_lattice() {
   frame_->dx = options_.dx;
   frame_->dims = geometry_->dims();
   frame_->origin = geometry_->origin();
-  frame_->check_fills_box(domain->boxlo, domain->boxhi);
+  frame_->check_fills_box(domain->boxlo, domain->boxhi, domain->periodicity);
   lbm_pore::check_boundaries(options_, domain->periodicity);
   const lbm::FluidParameters p = lbm_pore::fluid_parameters(options_, *units_);
   const lbm::FlowDrive drive = lbm_pore::drive_of(options_, *units_);

@@ -30,6 +30,7 @@ void FixLbmPore::write_restart(FILE* fp) {
                           "n_dem): the continued run will differ slightly from an uninterrupted one");
   try {
     lbm::write_checkpoint(*solver_, path);
+    lbm::prune_checkpoints(prefix, solver_->decomposition().comm.rank(), options_.checkpoint_keep);
   } catch (const lbm::InputError& e) {
     lbm_pore::stop_on_this_rank(error, comm->me, screen, logfile, e.what());
   }

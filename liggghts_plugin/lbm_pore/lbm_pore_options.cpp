@@ -184,6 +184,8 @@ PoreOptions parse_pore_options(const std::vector<std::string>& args) {
       o.vtk_directory = words.text("vtk (directory)");
     } else if (key == "checkpoint") {
       o.checkpoint_prefix = words.text(key);
+    } else if (key == "checkpoint_keep") {
+      o.checkpoint_keep = words.integer(key, 0, 1000000000);
     } else {
       fail("unknown keyword '" + key + "'; valid keywords: " + pore_options_usage());
     }
@@ -200,7 +202,7 @@ const char* pore_options_usage() {
   return "dx, rho, nu, n_dem, magic, scene (pore|voxels), origin, lateral, velocity, "
          "pressure_loss, boundary, mass_correction, rotation, lubrication, lubrication_cutoff, deposit_speed, burst_drop, "
          "burst_window, burst_deposits, burst_file, vtk, "
-         "checkpoint";
+         "checkpoint, checkpoint_keep";
 }
 
 }  // namespace lbm_pore

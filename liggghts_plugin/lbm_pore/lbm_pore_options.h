@@ -49,6 +49,9 @@ struct PoreOptions {
   std::string vtk_directory = "lbm_vtk";
   // Restart companion file prefix ("" = restart file name + ".fluid").
   std::string checkpoint_prefix;
+  // Checkpoints kept per rank, the newest by step (0: all, as LIGGGHTS keeps every
+  // `restart N file.*`); 2 with restart files written in turn (`restart N a b`).
+  int checkpoint_keep = 0;
 };
 
 // Parses arg[0..narg) (the words after the style name). Throws lbm::InputError with a

@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "coupling/unit_conversion.h"
 #include "lbm/input_error.h"
@@ -80,4 +81,33 @@ TEST(LatticeFrame, SubdomainBoxesTileTheLattice) {
     }
   }
   EXPECT_EQ(next, 37);
+}
+
+// The paper's width 5.63 d at 7.1 cells per d is 40 cells, 5.6338 d: within half a cell of
+// the box, but as a periodic length LIGGGHTS's images of a particle would lie 0.027 cells
+// from the lattice's, and two ranks sharing that face would disagree on which nodes a
+// sphere there covers (a NaN in long runs). The periodic axes must match to round-off.
+TEST(LatticeFrame, PeriodicBoxMustBeTheLatticePeriod) {
+  coupling::LatticeFrame frame;
+  frame.dx = 1.0 / 7.1;
+  frame.dims = {90, 40, 40};
+  for (int a = 0; a < 3; ++a) frame.origin[a] = 0.5 * frame.dx;
+  const int periodic[3] = {0, 1, 1};
+  const double lo[3] = {0.0, 0.0, 0.0};
+  const double paper_width[3] = {12.69, 5.63, 5.63};
+  EXPECT_NO_THROW(frame.check_fills_box(lo, paper_width));  // not periodic: half a cell
+  try {
+    frame.check_fills_box(lo, paper_width, periodic);
+    ADD_FAILURE() << "a periodic width of 5.63 with 40 cells of 1/7.1 was accepted";
+  } catch (const lbm::InputError& e) {
+    const std::string text = e.what();
+    EXPECT_NE(text.find("periodic along y"), std::string::npos) << text;
+    EXPECT_NE(text.find("5.63380281690141"), std::string::npos) << text;  // the length to set
+  }
+  // Lengths of whole cells as in.pore writes them (round(W * cells_per_d) / cells_per_d,
+  // 15 digits): accepted, on every axis, periodic or not.
+  const double whole[3] = {90 / 7.1, 5.63380281690141, 5.63380281690141};
+  EXPECT_NO_THROW(frame.check_fills_box(lo, whole, periodic));
+  const int all_periodic[3] = {1, 1, 1};
+  EXPECT_NO_THROW(frame.check_fills_box(lo, whole, all_periodic));
 }

@@ -29,10 +29,22 @@ lbm::Box LatticeFrame::owned_box(const double* sublo, const double* subhi, const
   return box;
 }
 
-void LatticeFrame::check_fills_box(const double* box_lo, const double* box_hi) const {
+void LatticeFrame::check_fills_box(const double* box_lo, const double* box_hi, const int* periodic) const {
+  // Round-off of a box length written with 15 digits (LIGGGHTS's ${} of a variable).
+  constexpr double kPeriodTolerance = 1e-9;
   for (int a = 0; a < 3; ++a) {
     const double lattice_lo = origin[a] - 0.5 * dx;
     const double lattice_hi = lattice_lo + dims[a] * dx;
+    const double period = dims[a] * dx, length = box_hi[a] - box_lo[a];
+    if (periodic && periodic[a] && std::abs(length - period) > kPeriodTolerance * dx) {
+      char text[400];
+      std::snprintf(text, sizeof text,
+                    "scene: the box is periodic along %c with length %.10g, but the lattice's period "
+                    "there is %d cells of dx = %.10g, %.10g: a periodic length must be a whole number "
+                    "of cells (set the box's length to %.15g)",
+                    "xyz"[a], length, dims[a], dx, period, period);
+      throw lbm::InputError(text);
+    }
     if (std::abs(lattice_lo - box_lo[a]) <= 0.5 * dx && std::abs(lattice_hi - box_hi[a]) <= 0.5 * dx) continue;
     char text[400];
     std::snprintf(text, sizeof text,

@@ -14,6 +14,14 @@ namespace lbm {
 void write_checkpoint(const FluidSolver& solver, const std::string& path);
 void read_checkpoint(FluidSolver& solver, const std::string& path);
 
+// Deletes this rank's older checkpoints of a run: of the files `<prefix>.<step>.<rank>` in
+// prefix's folder, all but the `keep` with the highest steps (keep <= 0: none deleted). A
+// host writing restart files in turn (restart.a, restart.b) keeps 2: the two checkpoints
+// its restart files name, even when a kill destroys the restart file being written. Files
+// of other ranks, other prefixes and unfinished `.partial` files are left alone. Returns
+// how many files it deleted.
+int prune_checkpoints(const std::string& prefix, int rank, int keep);
+
 // After read_checkpoint: the checkpoint holds the node types of the step it was written at,
 // with zeros inside the particles, while a new mapping starts empty. Turns every moving node
 // into fluid at rest (equilibrium at rho = 1, u = 0), so the host maps the particles afresh;

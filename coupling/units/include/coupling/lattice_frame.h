@@ -26,8 +26,13 @@ struct LatticeFrame {
                      const bool* at_upper) const;
 
   // Throws lbm::InputError when the lattice does not fill the box [box_lo, box_hi] (every
-  // node's cell inside it, to half a cell), naming the axis and both extents.
-  void check_fills_box(const double* box_lo, const double* box_hi) const;
+  // node's cell inside it, to half a cell), naming the axis and both extents. On a periodic
+  // axis (periodic[a] != 0, may be null) the box's length must be the lattice's period,
+  // dims * dx, to round-off: the host shifts its periodic images by the box length and the
+  // mapping by the lattice's period, so any difference puts one sphere at two places, and
+  // two ranks that share a periodic face then disagree on which nodes it covers (the owner
+  // of a covered node sends it as empty, the neighbour streams and reads it as fluid).
+  void check_fills_box(const double* box_lo, const double* box_hi, const int* periodic = nullptr) const;
 };
 
 // A host's processor grid as the lattice needs it (LIGGGHTS: comm->myloc, procgrid,
