@@ -1,7 +1,7 @@
 // Case 4: restitution of a head-on collision of two equal spheres under the dash-dot
 // (linear spring-dashpot) contact, integrated with velocity Verlet at dt = t_c / N for
 // N = 10, 20, 50, 100 DEM steps per contact, against the analytic restitution
-// e = exp(-pi zeta / sqrt(1 - zeta^2)) of the unclipped linear law (REFERENCES.md).
+// e = exp(-pi zeta / sqrt(1 - zeta^2)) of the unclipped linear law (doc/references.md).
 // Where the contact starts inside a step matters at coarse dt, so each N is the mean of
 // |e_sim / e - 1| over 8 evenly spaced start phases. One collision takes microseconds, so
 // the wall time is that of the 8 collisions, averaged over as many repetitions as fit in

@@ -36,12 +36,12 @@ SIZES = {
                   vtk_every=0),
 }
 
-# Measured here (2-core VM shared with other jobs, two runs at a time, one core each): the 22
-# finished runs of the quick studies of session 4 (5 cells per d, 142 DEM substeps per fluid
+# Measured on a 2-core VM shared with other jobs, two runs at a time, one core each: the 22
+# finished runs of the quick studies (5 cells per d, 142 DEM substeps per fluid
 # step, 30-180 particles) took 0.7e-7 to 2.8e-7 core-seconds per lattice cell and fluid step,
 # 1.8e-7 over all of them (the DEM substeps included: the more particles, the dearer); the
 # paper's scene (90 x 40 x 40 at 7.1 cells per d) then costs about 7 core-hours per 10^6
-# fluid steps, as bench_paper_run measured (README).
+# fluid steps, as bench_paper_run measured then (its current figure: doc/performance.md).
 CORE_SECONDS_PER_CELL_STEP = 1.8e-7
 N_DEM = 100  # DEM steps per fluid step at the paper's resolution (in.pore's n_dem)
 PAPER_CELLS_PER_D = 7.1

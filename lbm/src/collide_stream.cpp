@@ -65,11 +65,11 @@ using L = D3Q19;
 // vectorise a loop that mixes byte and double lanes.
 // The chunk length depends on the stores. Streamed to memory, longer bursts per population
 // pay: the memory serves 38 streams (19 pulled, 19 written) far below its one-stream copy
-// bandwidth, and less so the longer each write burst (session 7, 2-core AMD EPYC KVM
+// bandwidth, and less so the longer each write burst (measured on a 2-core AMD EPYC KVM
 // guest, 32 MiB L3: 128^3 on one thread 56 -> 86-90 MLUPS from 128 to 320 nodes, the
 // paper's rank block of 90 x 20 x 40 on two concurrent processes 50 -> 64-69; 512 and more
-// fall back). With plain stores 128 (session 9, in place: 256 and 512 no faster at 64^3,
-// 128^3 or on the paper's rank block, 2 interleaved rounds). README "Measured figures".
+// fall back). With plain stores 128 (in place: 256 and 512 no faster at 64^3, 128^3 or on
+// the paper's rank block, 2 interleaved rounds). Measure with bench_lbm (doc/performance.md).
 constexpr int kChunkStreaming = 320;
 constexpr int kChunkPlain = 128;
 // Room for the held-back tail before a chunk's values: less than a line.
@@ -77,17 +77,17 @@ constexpr int kHeldBack = int(detail::kCacheLine / sizeof(Real));
 // Streaming stores pay where the arrays do not stay in the cache between steps (128^3:
 // 670 MB); where they do, they send the output to memory, from where the next step reads
 // it back, and plain stores are faster (paper's rank block, 25 MB, in a 480 MB L3: 1.6x the
-// rows with streamed bodies; 64^3: 1.3x; 128^3: 0.78x; README "Measured figures"). Plain
+// rows with streamed bodies; 64^3: 1.3x; 128^3: 0.78x; bench_lbm, doc/performance.md). Plain
 // stores when both population arrays take at most this share of the last-level cache, so
 // that a second rank and the coupling's data fit beside them.
 constexpr double kPlainStoresUpToCacheShare = 0.25;
 // In place (the AA pattern, PopulationField) always plain stores, written straight from the
 // arithmetic into the field: a plain store writes a line that has just been read, so it
 // costs no write-allocate, and the 19 memcpy calls per chunk of the buffered path are gone.
-// Session 9 (bench_lbm, 2 interleaved pairs, in place, plain against streamed beyond half
+// Measured with bench_lbm (2 interleaved pairs, in place, plain against streamed beyond half
 // the L3): 128^3 on one thread 104-106 against 78 MLUPS, on two 132-147 against 117-118;
-// 64^3 105-113 against 68-70 on one thread. (Session 8's plain stores went through the
-// buffer and were no faster than streamed ones out of the cache.)
+// 64^3 105-113 against 68-70 on one thread. (Plain stores through the buffer were no faster
+// than streamed ones out of the cache.)
 // The q loops carry "GCC unroll 19": GCC peels at most 16 iterations by default, and only a
 // fully unrolled loop turns the velocity components into constants (a 2.5x speed-up).
 

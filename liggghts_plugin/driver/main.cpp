@@ -59,12 +59,14 @@ int main(int argc, char** argv) {
   lbm_pore::block_stop_signals();
   // Open MPI prints its "MPI_ABORT was invoked" notice from the aborting process after the
   // error that caused it; quiet (unless the user set it) so the project's ERROR is the last
-  // line. mpirun's own notices on a non-zero exit need `mpirun -q` (doc/liggghts_lbm.txt).
+  // line. mpirun's own notices on a non-zero exit need `mpirun -q`
+  // (liggghts_plugin/doc/liggghts_lbm.txt).
   setenv("OMPI_MCA_orte_execute_quiet", "1", /*overwrite=*/0);
   // The fluid's halo messages between ranks on one node are 70-600 kB a step (the paper's
   // lattice). Open MPI sends such messages by its single-copy mechanism (CMA), which pins
   // the pages on every message; its copy through the shared-memory buffers took 30 % less
-  // time in the halo stage on the paper scene (2 ranks, README "Measured figures").
+  // time in the halo stage on the paper scene (2 ranks; doc/performance.md, "Running on
+  // several cores").
   // Unless the user chose otherwise.
   setenv("OMPI_MCA_btl_vader_single_copy_mechanism", "none", /*overwrite=*/0);
   MPI_Init(&argc, &argv);

@@ -3,8 +3,8 @@
 // rank may run on. mpirun binds every rank to one core by default when it starts two or
 // fewer ranks (Open MPI's "bind to core"), so `OMP_NUM_THREADS=2 mpirun -np 1 liggghts-lbm`
 // runs both threads on one core: every stage split over the threads then takes longer than
-// on one thread (the paper scene 3.7 against 2.7 ms per fluid step, README "Measured
-// figures", session 10). The fix says so at setup instead of leaving the user to find it.
+// on one thread (the paper scene 3.7 against 2.6 ms per fluid step; doc/performance.md,
+// "Running on several cores"). The fix says so at setup instead of leaving the user to find it.
 #include <mpi.h>
 
 #include <string>

@@ -1,6 +1,6 @@
 // The paper's voxel-sum wall (contact/voxel_sum_wall.h) against sums this file computes on its
 // own: its own distance to a voxel, its own force law, root solves for rest positions. Run
-// for both readings of the paper's parameter table (PAPER_NOTES.md): the coefficients in
+// for both readings of the paper's parameter table (doc/paper_units.md): the coefficients in
 // lattice units (k_w = k_a = 0.1) and in d-units with d = 7 cells (k_w = 0.1 * 7^3 = 34.3,
 // k_a = 0.1 * 7^2 = 4.9), with R = 3.5 cells, rho_p = 2.3, mu = 0.1. The thresholds each test
 // prints ("[voxel_sum]" lines) are the figures quoted in doc/wall_models.md.

@@ -1,7 +1,7 @@
 // Lubrication: the correction law itself, and the total force (lattice + lubrication) on a
 // sphere approaching a wall (cases/sphere_wall_approach.h, shared with examples/accuracy)
 // and on two approaching spheres against Brenner (1961) / the two-sphere values in
-// REFERENCES.md.
+// doc/references.md.
 #include <gtest/gtest.h>
 
 #include <cstdio>

@@ -1,4 +1,4 @@
-"""Fault campaign (issue 14): a generated set of bad inputs to every style of this project --
+"""Fault campaign: a generated set of bad inputs to every style of this project --
 fix lbm/pore, fix wall/voxel, pair_style lbm/dashdot and voxel files -- each run through
 liggghts-lbm (tests/harness/liggghts_run.py) on tests/faults/in.fault. Every one must end with
 a LIGGGHTS ERROR line naming the keyword (or file) within 20 s: no crash ("terminate called",
@@ -6,9 +6,10 @@ a signal), no hang, nothing silently accepted, no NaN. One PASS/FAIL line per in
 
     SUMMARY inputs N: crashes a, hangs b, silently accepted c, unclear errors d, NaN e, not run p
 
-The cases marked `pending` need a call that fix lbm/pore itself must make (the checks live in
+The cases marked `pending` need a call that fix lbm/pore makes (the checks live in
 pore_scene_setup, lbm/memory_estimate and plugin_common/entry_guard); they run when
-FIX_CALLS_IN_PLACE is True or with LBM_PORE_FAULT_PENDING=1 in the environment;
+FIX_CALLS_IN_PLACE is True (it is: fix lbm/pore makes all three calls) or with
+LBM_PORE_FAULT_PENDING=1 in the environment;
 LBM_PORE_FAULT_SKIP=<regex> leaves out the cases whose names match. Case closed_box runs the valid edge case
 velocity 0 in a closed voxel box and requires every output to be finite.
 
@@ -144,7 +145,7 @@ def lbm_pore_cases():
              fixline=f"{LBM} dx 1 scene pore inlet 1e6 free 4 length 1e6 outlet 6 width 1e5 diameter 15 "
                      "velocity 0.001"),
     ]
-    # Output paths checked at setup (pending: fix lbm/pore calls check_output_paths).
+    # Output paths checked at setup (the call fix lbm/pore makes: check_output_paths).
     pending = "check_output_paths"
     cases += [
         Case("lbm/pore vtk directory is a file", ["vtk", "not a directory"],

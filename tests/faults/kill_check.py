@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""A killed run loses nothing, an error stays the last line, nothing is lost in a long run
-(issue 14 items 4 and 6). Runs liggghts-lbm on tests/faults/in.kill* (the coupled tests'
+"""A killed run loses nothing, an error stays the last line, nothing is lost in a long run.
+Runs liggghts-lbm on tests/faults/in.kill* (the coupled tests'
 pore scene with four particles moving into the pore) and in.bookkeeping; prints every
 figure with its bound (tests/harness/liggghts_run.py).
 

@@ -1,4 +1,4 @@
-// Mass conservation at interpolated moving walls over long runs (issue 14, item 5): a fixed
+// Mass conservation at interpolated moving walls over long runs: a fixed
 // sphere in a dense periodic simple-cubic array driven by a body force (solid fraction 0.22
 // and 0.45, d ~ 8 cells) and a sphere spinning in a closed box, with Bouzidi and
 // Mei-Luo-Shyy, 50,000 steps each. Without the link mass correction

@@ -160,7 +160,7 @@ def pull_off_force(boxes, coef, x, y, z_rest, floor_top):
 
 
 def write_voxel_file(path, dims, boxes, spacing=1):
-    """A raw lbm-pore voxel file (README, "Voxel geometry files"), origin 0."""
+    """A raw lbm-pore voxel file (doc/fluid.md, "Voxel geometry files"), origin 0."""
     nx, ny, nz = dims
     data = bytearray(nx * ny * nz)
     for (i0, i1), (j0, j1), (k0, k1) in boxes:

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Checks of fix wall/voxel's two wall models through liggghts-lbm (issue 11): one particle of
+"""Checks of fix wall/voxel's two wall models through liggghts-lbm: one particle of
 R = 3.5 cells (d = 7, rho_p = 2.3, mu = 0.1) on voxel walls written here, in the d-unit
 reading of the paper's table (k_w = 0.1 x 7^3 = 34.3, k_a = 0.1 x 7^2 = 4.9 lattice units)
 and, where named, the lattice reading (k_w = k_a = 0.1). Every threshold is computed here

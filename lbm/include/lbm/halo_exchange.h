@@ -20,21 +20,21 @@ namespace lbm {
 // and receives nothing, and an axis without one on either side (non-periodic, owned
 // entirely) is skipped.
 //
-// What is sent (README, "Halo exchange, session halo5"): per axis either the five
+// What is sent (doc/fluid.md, "Halo exchange"): per axis either the five
 // populations crossing each face into the receiving block (c_q[a] = +1 upwards, -1
 // downwards: 5/19 of the bytes) or all 19, as HaloPopulations says. exchange(field) sends
 // all 19. FluidSolver::step() sends the five on every axis; so does the sphere coupling,
 // and on the axes where Mei-Luo-Shyy may read a whole ghost node (coupling/boundary/
 // whole_ghost_axes.h, decided by all ranks together) it sends that node's moments, the only
 // thing the scheme reads of it, four values per cell (FluidSolver::exchange_ghost_moments,
-// sent_planes(), exchange_scalars(); session 10). The refill, which reads only ghost
+// sent_planes(), exchange_scalars()). The refill, which reads only ghost
 // densities, gets them with one value per cell (sent_cells(), exchange_scalar()).
 //
-// Audit of the readers of ghost populations (session halo5). In a step the exchange is
+// Audit of the readers of ghost populations. In a step the exchange is
 // followed by static bounce-back (writes the solid ghost slots fluid nodes pull, reads owned
 // nodes), the moving walls (write a slot at the non-fluid x + c_q of an owned fluid x; read
 // x; Bouzidi reads f_q(x - c_q), crossing; Mei-Luo-Shyy reads the moments of x - c_q, the
-// whole ghost node the flags are for, sent as moments since session 10), the link mass correction (read-modify-write of f_p(x - c_p),
+// whole ghost node the flags are for, sent as moments), the link mass correction (read-modify-write of f_p(x - c_p),
 // crossing), the open faces (read and write f_q(x - c_q) of owned face nodes, crossing) and
 // collide-stream (pulls f_q(x - c_q), crossing, for every owned node). Collide-stream also
 // computes the x-padding ghosts inside a run, from any population of the ghosts around

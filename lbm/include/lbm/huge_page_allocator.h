@@ -3,7 +3,7 @@
 // for transparent huge pages (madvise), which most kernels give only to memory that asks
 // ("madvise" mode). The collide-stream kernel reads 19 streams and writes 19, each in a
 // 4 KiB page of its own that it leaves every 512 doubles; on 2 MiB pages the 38 streams
-// miss the TLB 512 times less often: 10 % faster at 128^3 (README, "Measured figures").
+// miss the TLB 512 times less often: 10 % faster at 128^3 (bench_lbm, doc/performance.md).
 // Only where memory lives changes, never a value. Elsewhere (or when the system says no)
 // it is an ordinary aligned allocation.
 #include <cstddef>

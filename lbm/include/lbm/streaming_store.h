@@ -8,8 +8,9 @@
 // and the head and the tail of a range that do not fill a line as one 8- or 4-byte
 // non-temporal store (movnti) per value (a plain store into a line that is not in the cache
 // holds the store buffer until that line has been read: that cost the kernel a third of its
-// time at 128^3, README "Measured figures"). Other threads may write the rest of a head's
-// or a tail's line: the non-temporal stores write only their own bytes, as plain ones do.
+// time at 128^3, measured with bench_lbm, doc/performance.md). Other threads may write the
+// rest of a head's or a tail's line: the non-temporal stores write only their own bytes, as
+// plain ones do.
 // Arrays that fit in the cache are written with plain stores instead (collide_stream.cpp):
 // streamed, they would be read back from memory by the next step. Without AVX the plain
 // loop is all there is; the values written are the same either way (only the way they

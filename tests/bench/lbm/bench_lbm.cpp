@@ -3,9 +3,10 @@
 // 2 threads, next to the memory-bandwidth roofline measured in the same run.
 //
 // Bytes per update (counted like STREAM copy): 19 populations read + 19 written, in the
-// storage precision, + 1 byte of node type. Roofline MLUPS = copy bandwidth / that, with the
-// copy bandwidth the larger of a plain copy and a copy with streaming stores: the kernel
-// writes with streaming stores (no write-allocate), so it is held to the same yardstick.
+// storage precision, + 1 byte of node type. Roofline MLUPS = bandwidth / that, with the
+// bandwidth the largest of a plain copy, a copy with streaming stores and an in-place update
+// (the in-place kernel writes back lines it has just read: no write-allocate either).
+// The figures and what they mean: doc/performance.md.
 // Also one rank's share of the paper's lattice (90 x 40 x 40 split in two along x: rows of
 // 45 nodes) on one thread, and the memory the solver holds per lattice node.
 // When CMake found Palabos (Debian's libplb-dev), the same 128^3 TRT case in Palabos on one
@@ -164,7 +165,7 @@ int main() {
     std::printf("BENCH lbm_roofline_%dt %.1f MLUPS\n", threads, roofline);
     // The yardstick of the kernel's own access pattern: 19 arrays read and 19 written, as
     // large as the 128^3 lattice's, the most favourable burst of those tried. On machines
-    // whose memory serves many streams far below one (session 7: a 2-core AMD EPYC guest,
+    // whose memory serves many streams far below one (a 2-core AMD EPYC guest measured
     // 57 GB/s for one array, 25 for 19) this, not the one-array copy, is what the kernel
     // can reach; lbm_roofline_ratio stays the one-array figure.
     double many = 0.0;

@@ -49,7 +49,7 @@ inline double dash_dot_force(const DashDotParams& params, const NormalContactInp
   return dash_dot_force(params, damping_coefficient(params, in.effective_mass), in);
 }
 
-// Analytic figures of the linear contact (see REFERENCES.md, "Spring-dashpot"):
+// Analytic figures of the linear contact (doc/references.md, "Linear spring-dashpot"):
 double restitution_coefficient(double damping_ratio);               // e(zeta)
 double contact_duration(const DashDotParams& params, double effective_mass);  // t_c
 // Largest stable explicit step dt < 2 sqrt(m_eff/k) of the undamped oscillator.

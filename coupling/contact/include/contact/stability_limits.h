@@ -7,7 +7,7 @@
 
 namespace contact {
 
-// At least this many steps must resolve a contact (REFERENCES.md: dt <= t_c / 10).
+// At least this many steps must resolve a contact (doc/references.md: dt <= t_c / 10).
 constexpr double kMinStepsPerContact = 10.0;
 
 // Overlap / R (the smaller radius of a pair) above which the stiffness is too soft for the

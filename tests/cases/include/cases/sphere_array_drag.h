@@ -1,7 +1,7 @@
 #pragma once
 // Drag on a fixed sphere in a periodic simple-cubic array driven by a body force g
 // (tests/coupling/test_drag_array.cpp and the drag and moving cases of examples/accuracy).
-// Reference: Sangani & Acrivos (1982), K(chi = d/L = 0.5) = 2.8420 (REFERENCES.md), with
+// Reference: Sangani & Acrivos (1982), K(chi = d/L = 0.5) = 2.8420 (doc/references.md), with
 // F = 6 pi mu a K U, U the superficial velocity, and F = g L^3 in steady state; the momentum
 // exchange must also balance the body force on the fluid, F_me = g N_fluid.
 #include <cmath>

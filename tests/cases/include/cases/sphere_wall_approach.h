@@ -16,7 +16,7 @@
 
 namespace cases {
 
-// Brenner (1961), REFERENCES.md: lambda at the gaps delta/a.
+// Brenner (1961), doc/references.md: lambda at the gaps delta/a.
 constexpr int kBrennerPoints = 7;
 constexpr double kBrennerDelta[kBrennerPoints] = {1.0, 0.5, 0.2, 0.1, 0.05, 0.02, 0.01};
 constexpr double kBrennerLambda[kBrennerPoints] = {2.1255, 3.2054, 6.3409, 11.459,

@@ -12,7 +12,7 @@
 namespace coupling {
 
 // A particle may move at most this many cells per fluid step: the mapping uncovers at most
-// one layer of nodes per step, and the refill assumes so (DESIGN.md, stability guards).
+// one layer of nodes per step, and the refill assumes so (doc/stability.md).
 constexpr double kMaxShiftPerFluidStep = 0.5;
 
 struct ParticleProbe {

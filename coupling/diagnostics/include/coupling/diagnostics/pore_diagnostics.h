@@ -73,7 +73,7 @@ double pressure_loss(const lbm::FluidSolver& solver);
 
 // The pressure loss as the paper reports it, in units of the outlet pressure
 // P_out = rho_out c_s^2 (rho_out: the density the drive imposes at the outlet, rho0 without
-// a drive). With rho_out = 1, P / P_out = 3 Delta p = rho_in - rho_out (PAPER_NOTES.md).
+// a drive). With rho_out = 1, P / P_out = 3 Delta p = rho_in - rho_out (doc/references.md).
 double outlet_pressure(const lbm::FluidSolver& solver);
 double pressure_loss_in_outlet_units(const lbm::FluidSolver& solver);
 

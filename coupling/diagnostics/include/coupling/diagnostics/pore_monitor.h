@@ -61,7 +61,7 @@ class PoreMonitor {
     kPressureLossOutlet,  // the pressure loss in units of the outlet pressure, P / P_out
     kLargestPressureLoss, // the largest P / P_out of the run so far
     kBurstCount,          // erosive bursts recorded so far
-    // The fluid's mass budget (mass units; issue 14): mass in = mass out + change of mass held.
+    // The fluid's mass budget (mass units): mass in = mass out + change of mass held.
     kFluidMassIn,         // mass through the inlet face, sum over fluid steps (cumulative;
                           // the populations that crossed it, lbm::open_face_mass)
     kFluidMassOut,        // ... and out through the outlet face
