@@ -73,32 +73,87 @@ def write_run_file(launch_dir, index, run_dir, knobs, scene):
         f.write("\n".join(lines) + "\n")
 
 
+START_MARK = "STUDY_RUN_START"
+# The restart files in.pore writes in turn (restart_every), and the one LIGGGHTS writes when a
+# run is stopped by SIGTERM or SIGINT (fix lbm/pore's signal handling).
+RESTART_PATTERN = re.compile(r"^(restart\.[ab]|restart_forced_liggghts_\d+\.data)$")
+
+
+def _last_segment(text):
+    """The part of a log written by the latest launch of the run: a resumed run appends to
+    its log.liggghts, each launch after a STUDY_RUN_START line of in.study."""
+    lines = text.splitlines()
+    starts = [i for i, line in enumerate(lines) if line.startswith(START_MARK)]
+    return lines[starts[-1]:] if starts else lines
+
+
 def run_state(run_dir):
-    """(state, reason) of a run from its log: ('done', ''), ('failed', ERROR line) or
-    ('incomplete', why)."""
+    """(state, reason) of a run from the latest launch's part of its log: ('done', ''),
+    ('failed', ERROR line) or ('incomplete', why)."""
     log = os.path.join(run_dir, "log.liggghts")
     if not os.path.exists(log):
         return "incomplete", "never started (no log.liggghts)"
     with open(log, errors="replace") as f:
-        text = f.read()
-    error = next((line.strip() for line in text.splitlines() if line.startswith("ERROR")), "")
+        lines = _last_segment(f.read())
+    error = next((line.strip() for line in lines if line.startswith("ERROR")), "")
     # an error on a rank other than the first reaches only the screen, i.e. stdout.txt
     stdout = os.path.join(run_dir, "stdout.txt")
     if not error and os.path.exists(stdout):
         with open(stdout, errors="replace") as f:
-            error = next((line.strip() for line in f if line.startswith("ERROR")), "")
+            error = next((line.strip() for line in _last_segment(f.read()) if line.startswith("ERROR")), "")
     if error:
         return "failed", error
-    if any(line.startswith(DONE_MARK) for line in text.splitlines()):
+    if any(line.startswith(DONE_MARK) for line in lines):
         return "done", ""
     return "incomplete", "stopped before the end (killed, timed out or another partition's abort)"
 
 
-def _clean(run_dir):
-    """A run starts from an empty folder: fix lbm/pore appends to bursts.txt."""
+def restart_files(run_dir):
+    """The run's restart files, newest first (a kill while one was written leaves it
+    unreadable; the one before stays whole)."""
+    if not os.path.isdir(run_dir):
+        return []
+    found = [os.path.join(run_dir, n) for n in os.listdir(run_dir) if RESTART_PATTERN.match(n)]
+    return sorted(found, key=os.path.getmtime, reverse=True)
+
+
+def _knobs_file(run_dir):
+    return os.path.join(run_dir, "knobs.json")
+
+
+def plan_run(run_dir, knobs, retry_failed=False):
+    """What a launch of the study does with one run: ('skip', state) for a finished run (and
+    a failed one unless retry_failed), ('resume', restart files newest first) for a run cut
+    short that left restart files with the same knobs, else ('fresh', why)."""
+    if not os.path.isdir(run_dir):
+        return "fresh", "new"
+    try:
+        with open(_knobs_file(run_dir)) as f:
+            same = json.load(f) == {k: str(v) for k, v in knobs.items()}
+    except (OSError, ValueError):
+        same = False
+    if not same:
+        return "fresh", "its knobs changed (or were never recorded): starts anew"
+    state, _ = run_state(run_dir)
+    if state == "done" or (state == "failed" and not retry_failed):
+        return "skip", state
+    files = restart_files(run_dir)
+    return ("resume", files) if files and state == "incomplete" else ("fresh", state)
+
+
+def _clean(run_dir, knobs):
+    """A run starts from an empty folder (fix lbm/pore appends to bursts.txt) that records
+    its knobs, so that a later launch resumes it only with the same ones."""
     if os.path.isdir(run_dir):
         shutil.rmtree(run_dir)
     os.makedirs(run_dir)
+    with open(_knobs_file(run_dir), "w") as f:
+        json.dump({k: str(v) for k, v in knobs.items()}, f, indent=1, sort_keys=True)
+
+
+def resume_knobs(knobs, restart_file):
+    """The knobs of a launch that continues a run from restart_file (in.pore's resume)."""
+    return dict(knobs, resume=1, resume_file=restart_file)
 
 
 def _mpirun(mpirun, ranks):
@@ -107,8 +162,9 @@ def _mpirun(mpirun, ranks):
 
 def _execute(cmd, cwd, stdout_path, timeout):
     """Runs cmd in its own process group (so a timeout kills mpirun and its ranks, which
-    `timeout mpirun ...` leaves running) and returns its exit code (None: timed out)."""
-    with open(stdout_path, "w") as out:
+    `timeout mpirun ...` leaves running) and returns its exit code (None: timed out). The
+    screen output is appended: a resumed run's launches follow each other in one file."""
+    with open(stdout_path, "a") as out:
         proc = subprocess.Popen(cmd, cwd=cwd, stdout=out, stderr=subprocess.STDOUT,
                                 start_new_session=True)
         try:
@@ -134,51 +190,108 @@ def _study_command(driver, launch_dir, nruns, partitions, ranks_per_run, mpirun)
     return cmd
 
 
-def launch_partitions(driver, study_dir, runs, partitions, ranks_per_run, mpirun, timeout):
+def _unreadable_restart(run_dir, launch_knobs):
+    """After a launch that resumed from launch_knobs['resume_file']: if it failed reading
+    that file (a kill while it was written), the file is renamed out of the way (kept, as
+    <name>.unreadable) so that the next plan resumes from the one before. True if it did."""
+    restart = launch_knobs.get("resume_file")
+    state, reason = run_state(run_dir)
+    if not restart or state != "failed" or not re.search(r"restart|checkpoint", reason, re.I):
+        return False
+    if os.path.exists(restart):
+        os.replace(restart, restart + ".unreadable")
+    return True
+
+
+def prepare_launch(run_dir, knobs, retry_failed=False):
+    """The knobs of the next launch of a run, after cleaning its folder for a fresh start;
+    None when the run is finished (or failed, unless retry_failed)."""
+    action, detail = plan_run(run_dir, knobs, retry_failed)
+    if action == "skip":
+        return None
+    if action == "resume":
+        return resume_knobs(knobs, detail[0])
+    _clean(run_dir, knobs)
+    return dict(knobs)
+
+
+def launch_partitions(driver, study_dir, runs, partitions, ranks_per_run, mpirun, timeout,
+                      progress=None, retry_failed=False):
     """Runs `runs` (list of (name, knobs)) in multi-partition launches of up to `partitions`
     runs each until every run is done or failed (or a launch times out or settles nothing);
-    returns the list of launches made."""
+    a run cut short continues from its newest restart file. Returns the launches made."""
     launches, pending = [], [name for name, _ in runs]
     knobs_of = dict(runs)
     while pending:
-        batch = pending[:partitions]
+        batch, launch_knobs = [], {}
+        for name in pending:
+            if len(batch) == partitions:
+                break
+            knobs = prepare_launch(os.path.join(study_dir, "runs", name), knobs_of[name], retry_failed)
+            if knobs is not None:
+                batch.append(name)
+                launch_knobs[name] = knobs
+        pending = [name for name in pending if name not in batch and
+                   plan_run(os.path.join(study_dir, "runs", name), knobs_of[name], retry_failed)[0] != "skip"]
+        if not batch:
+            break
         launch_dir = os.path.join(study_dir, "launches", str(len(launches) + 1))
         os.makedirs(launch_dir, exist_ok=True)
         for i, name in enumerate(batch, start=1):
-            run_dir = os.path.join(study_dir, "runs", name)
-            _clean(run_dir)
-            write_run_file(launch_dir, i, run_dir, knobs_of[name], study_scene(study_dir))
+            write_run_file(launch_dir, i, os.path.join(study_dir, "runs", name), launch_knobs[name],
+                           study_scene(study_dir))
         cmd = _study_command(driver, launch_dir, len(batch), len(batch), ranks_per_run, mpirun)
         start = time.time()
+        if progress:
+            for name in batch:
+                progress.started(name, launch_knobs[name])
         code = _execute(cmd, launch_dir, os.path.join(launch_dir, "stdout.txt"), timeout)
+        if progress:
+            for name in batch:
+                progress.stopped(name)
         launches.append(dict(command=cmd, runs=batch, exit_code=code,
                              seconds=round(time.time() - start, 1),
                              cores=len(batch) * ranks_per_run))
+        retried = [name for name in batch
+                   if _unreadable_restart(os.path.join(study_dir, "runs", name), launch_knobs[name])]
         cut_short = [name for name in batch
                      if run_state(os.path.join(study_dir, "runs", name))[0] == "incomplete"]
-        if code is None or cut_short == batch:
+        if code is None or (cut_short == batch and not retried):
             break  # timed out, or nothing in the batch settled: stop rather than loop
-        pending = cut_short + pending[len(batch):]
+        pending = retried + cut_short + pending
     return launches
 
 
-def launch_pool(driver, study_dir, runs, parallel, ranks_per_run, mpirun, timeout):
-    """Runs each run in its own mpirun, `parallel` at a time; returns the launches made."""
+def launch_pool(driver, study_dir, runs, parallel, ranks_per_run, mpirun, timeout,
+                progress=None, retry_failed=False):
+    """Runs each run in its own mpirun, `parallel` at a time; a run cut short continues from
+    its newest restart file, a finished one is left alone. Returns the launches made."""
     def one(item):
         name, knobs = item
         run_dir = os.path.join(study_dir, "runs", name)
-        _clean(run_dir)
-        launch_dir = os.path.join(run_dir, "launch")
-        os.makedirs(launch_dir)
-        write_run_file(launch_dir, 1, run_dir, knobs, study_scene(study_dir))
-        cmd = _study_command(driver, launch_dir, 1, 1, ranks_per_run, mpirun)
-        start = time.time()
-        code = _execute(cmd, launch_dir, os.path.join(run_dir, "stdout.txt"), timeout)
-        return dict(command=cmd, runs=[name], exit_code=code,
-                    seconds=round(time.time() - start, 1), cores=ranks_per_run)
+        made = []
+        for _ in range(3):  # a fresh start, or a resume and its fallbacks to older files
+            launch_knobs = prepare_launch(run_dir, knobs, retry_failed)
+            if launch_knobs is None:
+                break
+            launch_dir = os.path.join(run_dir, "launch")
+            os.makedirs(launch_dir, exist_ok=True)
+            write_run_file(launch_dir, 1, run_dir, launch_knobs, study_scene(study_dir))
+            cmd = _study_command(driver, launch_dir, 1, 1, ranks_per_run, mpirun)
+            start = time.time()
+            if progress:
+                progress.started(name, launch_knobs)
+            code = _execute(cmd, launch_dir, os.path.join(run_dir, "stdout.txt"), timeout)
+            if progress:
+                progress.stopped(name)
+            made.append(dict(command=cmd, runs=[name], exit_code=code,
+                             seconds=round(time.time() - start, 1), cores=ranks_per_run))
+            if not _unreadable_restart(run_dir, launch_knobs):
+                break
+        return made
 
     with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, parallel)) as pool:
-        return list(pool.map(one, runs))
+        return [launch for made in pool.map(one, runs) for launch in made]
 
 
 def write_summary(study_dir, study, size, runs, launches, mode):

@@ -3,7 +3,9 @@
 
   run_study.py <study> [--size tiny|quick|paper] [--out DIR] [--parallel P] [--ranks-per-run K]
                [--mode pool|partitions] [--driver liggghts-lbm] [--mpirun mpirun]
-               [--timeout S] [--add-run NAME:knob=value,...] [--dry-run] [--no-analysis]
+               [--timeout S] [--add-run NAME:knob=value,...] [--set knob=value ...]
+               [--restart-every FLUID_STEPS] [--fresh] [--retry-failed] [--progress-every S]
+               [--dry-run] [--no-analysis]
 
 Studies: singlejump collection dropvol porelength porediameter phaseac phasead conc pvpflux
 (studies.py lists their runs). Before it starts it prints the runs, the command and the
@@ -16,9 +18,19 @@ then analyze.py fits and plots (<out>/results.json, <out>/<study>.png).
 --mode pool (default): one mpirun per run, P at a time: a failing run stops only itself.
 --mode partitions: one `mpirun -np P*K liggghts-lbm -partition PxK -in in.study`; LIGGGHTS
   aborts every partition when one fails, and the runs cut short are relaunched (ensemble.py).
---add-run adds a run with the study's knobs changed (e.g. a deliberately failing one).
+--add-run adds a run with the study's knobs changed (e.g. a deliberately failing one);
+--set changes a knob of every run (e.g. --set u_lattice=0.005).
+
+Long studies survive interruption: every run writes restart files in turn (in.pore's
+restart_every, by default every 1/50 of the run, and keeps the two fluid checkpoints they
+name). Rerunning the same command leaves finished runs (and failed ones, unless
+--retry-failed) alone, continues each run that was cut short from its newest readable
+restart file, and starts anew a run whose knobs changed; --fresh deletes every run first.
+While the runs go on it prints, every --progress-every seconds (and keeps in
+<out>/progress.txt), the runs done and to do, each running run's step and the time left.
 """
 import argparse
+import json
 import os
 import shlex
 import shutil
@@ -27,6 +39,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import ensemble  # noqa: E402
 import studies  # noqa: E402
+from study_progress import StudyProgress  # noqa: E402
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 DEFAULT_DRIVER = os.path.join(REPO, "build", "liggghts_plugin", "liggghts-lbm")
@@ -39,6 +52,16 @@ def parse_added_run(text, base):
         key, _, value = item.partition("=")
         knobs[key.strip()] = value.strip()
     return name, knobs
+
+
+def restart_knobs(knobs, restart_every=None):
+    """The knobs that make a run resumable: restart files every restart_every fluid steps
+    (default 1/50 of the run, at least one fluid step), as DEM steps (a multiple of the DEM
+    steps per fluid step, so the continuation is exact), and the two checkpoints they name."""
+    n_dem = studies.dem_steps_per_fluid_step(knobs["cells_per_d"])
+    fluid_steps = (int(knobs["steps"]) + int(knobs["warmup"])) // n_dem
+    every = restart_every if restart_every else max(1, fluid_steps // 50)
+    return dict(knobs, restart_every=every * n_dem, checkpoint_keep=2)
 
 
 def main():
@@ -54,12 +77,22 @@ def main():
                         help="mpirun to launch with (default: mpirun when a launch needs > 1 rank)")
     parser.add_argument("--timeout", type=float, default=None, help="seconds per launch")
     parser.add_argument("--add-run", action="append", default=[], metavar="NAME:knob=value,...")
+    parser.add_argument("--set", action="append", default=[], metavar="knob=value",
+                        help="change a knob of every run")
+    parser.add_argument("--restart-every", type=int, default=None, metavar="FLUID_STEPS",
+                        help="fluid steps between restart files (default: 1/50 of a run)")
+    parser.add_argument("--fresh", action="store_true", help="delete the runs made before")
+    parser.add_argument("--retry-failed", action="store_true",
+                        help="run again the runs that failed (from their restart files)")
+    parser.add_argument("--progress-every", type=float, default=60.0, metavar="S")
     parser.add_argument("--dry-run", action="store_true", help="print the plan and the cost only")
     parser.add_argument("--no-analysis", action="store_true")
     args = parser.parse_args()
 
     runs = studies.runs_of(args.study, args.size)
     runs += [parse_added_run(text, runs[0][1]) for text in args.add_run]
+    changed = dict(parse_added_run(":" + ",".join(args.set), {})[1]) if args.set else {}
+    runs = [(name, restart_knobs(dict(knobs, **changed), args.restart_every)) for name, knobs in runs]
     out = os.path.abspath(args.out or f"{args.study}_{args.size}")
     paper_cost = studies.core_hours(studies.runs_of(args.study, "paper"))
     cost = studies.core_hours(runs)
@@ -75,19 +108,30 @@ def main():
         return 0
     if not os.path.exists(args.driver):
         sys.exit(f"no liggghts-lbm at {args.driver} (build first, or pass --driver)")
-    if os.path.isdir(os.path.join(out, "runs")):
-        shutil.rmtree(os.path.join(out, "runs"))
-    if os.path.isdir(os.path.join(out, "launches")):
-        shutil.rmtree(os.path.join(out, "launches"))
-    if os.path.exists(os.path.join(out, "in.pore")):
-        os.remove(os.path.join(out, "in.pore"))  # a fresh copy of the scene (ensemble.study_scene)
+    if args.fresh:
+        for folder in ("runs", "launches"):
+            shutil.rmtree(os.path.join(out, folder), ignore_errors=True)
+        if os.path.exists(os.path.join(out, "in.pore")):
+            os.remove(os.path.join(out, "in.pore"))  # a fresh copy of the scene (ensemble.study_scene)
+    else:
+        shutil.rmtree(os.path.join(out, "launches"), ignore_errors=True)  # partitions' scratch
     os.makedirs(out, exist_ok=True)
+    for name, knobs in runs:
+        action, detail = ensemble.plan_run(os.path.join(out, "runs", name), knobs, args.retry_failed)
+        what = {"skip": f"left alone ({detail})", "fresh": f"starts ({detail})",
+                "resume": f"resumes from {os.path.basename(detail[0]) if detail else ''}"}[action]
+        print(f"  {name}: {what}")
     launch = ensemble.launch_pool if args.mode == "pool" else ensemble.launch_partitions
-    launches = launch(args.driver, out, runs, args.parallel, args.ranks_per_run, args.mpirun,
-                      args.timeout)
+    with StudyProgress(out, runs, args.parallel, args.progress_every) as progress:
+        launches = launch(args.driver, out, runs, args.parallel, args.ranks_per_run, args.mpirun,
+                          args.timeout, progress=progress, retry_failed=args.retry_failed)
     for entry in launches:
         print(f"launch ({entry['seconds']} s, exit {entry['exit_code']}): "
               + " ".join(shlex.quote(c) for c in entry["command"]))
+    earlier = os.path.join(out, "summary.json")
+    if not args.fresh and os.path.exists(earlier):  # the launches of earlier sittings count too
+        with open(earlier) as f:
+            launches = json.load(f).get("launches", []) + launches
     summary = ensemble.write_summary(out, args.study, args.size, runs, launches, args.mode)
     if not args.no_analysis and summary["finished"]:
         import analyze

@@ -51,15 +51,18 @@ def thermo(run_dir):
 
 
 def bursts(run_dir):
-    """The run's erosive bursts, one dict per row of bursts.txt (pressures in P_out)."""
+    """The run's erosive bursts, one dict per row of bursts.txt (pressures in P_out). A run
+    resumed from a restart file records again the bursts it had recorded after that file was
+    written: a row with the step of an earlier one replaces it."""
     path = os.path.join(run_dir, "bursts.txt")
-    rows = []
+    rows = {}
     if os.path.exists(path):
         with open(path) as f:
             for line in f:
                 if line.strip() and not line.startswith("#"):
-                    rows.append(dict(zip(BURST_COLUMNS, map(float, line.split()))))
-    return rows
+                    row = dict(zip(BURST_COLUMNS, map(float, line.split())))
+                    rows[row["step"]] = row
+    return sorted(rows.values(), key=lambda r: r["step"])
 
 
 def largest_pressure(columns, warmup):

@@ -19,12 +19,19 @@ import sys
 
 def read_thermo(path):
     """Returns (header, rows) of the log's thermo blocks that share the last block's columns
-    (one block per run command), concatenated."""
+    (one block per run command), concatenated. A row whose step is not past the row before
+    supersedes the rows from its step on: a run resumed from a restart file (appending to
+    its log) repeats the steps between that file and where it was cut short."""
     blocks = read_thermo_blocks(path)
     if not blocks:
         sys.exit(f"{path}: no thermo block with a 'Step' header found")
     header = blocks[-1][0]
-    return header, [row for h, rows in blocks if h == header for row in rows]
+    kept = []
+    for row in (row for h, rows in blocks if h == header for row in rows):
+        while kept and kept[-1][0] >= row[0]:
+            kept.pop()
+        kept.append(row)
+    return header, kept
 
 
 def read_thermo_blocks(path):
