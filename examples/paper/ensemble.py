@@ -28,6 +28,7 @@ import re
 import shutil
 import signal
 import subprocess
+import threading
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -160,6 +161,30 @@ def _mpirun(mpirun, ranks):
     return [mpirun, "--allow-run-as-root", "--oversubscribe", "-np", str(ranks)]
 
 
+# The launches under way (each in its own process group), so that a runner asked to stop can
+# pass the request on: SIGTERM makes LIGGGHTS write a restart file at the next fluid step and
+# quit, from which the next launch of the study resumes.
+_RUNNING = set()
+_RUNNING_LOCK = threading.Lock()
+
+
+def stop_running_launches(signum=signal.SIGTERM, wait=60):
+    """Sends signum to every launch under way and waits up to `wait` s for them to end."""
+    with _RUNNING_LOCK:
+        running = list(_RUNNING)
+    for proc in running:
+        try:
+            os.killpg(proc.pid, signum)
+        except ProcessLookupError:
+            pass
+    deadline = time.time() + wait
+    for proc in running:
+        try:
+            proc.wait(timeout=max(0.1, deadline - time.time()))
+        except subprocess.TimeoutExpired:
+            os.killpg(proc.pid, signal.SIGKILL)
+
+
 def _execute(cmd, cwd, stdout_path, timeout):
     """Runs cmd in its own process group (so a timeout kills mpirun and its ranks, which
     `timeout mpirun ...` leaves running) and returns its exit code (None: timed out). The
@@ -167,6 +192,8 @@ def _execute(cmd, cwd, stdout_path, timeout):
     with open(stdout_path, "a") as out:
         proc = subprocess.Popen(cmd, cwd=cwd, stdout=out, stderr=subprocess.STDOUT,
                                 start_new_session=True)
+        with _RUNNING_LOCK:
+            _RUNNING.add(proc)
         try:
             return proc.wait(timeout=timeout)
         except subprocess.TimeoutExpired:
@@ -177,6 +204,9 @@ def _execute(cmd, cwd, stdout_path, timeout):
                 os.killpg(proc.pid, signal.SIGKILL)
                 proc.wait()
             return None
+        finally:
+            with _RUNNING_LOCK:
+                _RUNNING.discard(proc)
 
 
 def _study_command(driver, launch_dir, nruns, partitions, ranks_per_run, mpirun):
@@ -210,6 +240,13 @@ def prepare_launch(run_dir, knobs, retry_failed=False):
     if action == "skip":
         return None
     if action == "resume":
+        for name in ("log.liggghts", "stdout.txt"):  # a killed run may have left half a line
+            path = os.path.join(run_dir, name)
+            if os.path.exists(path) and os.path.getsize(path):
+                with open(path, "rb+") as f:
+                    f.seek(-1, os.SEEK_END)
+                    if f.read(1) != b"\n":
+                        f.write(b"\n")
         return resume_knobs(knobs, detail[0])
     _clean(run_dir, knobs)
     return dict(knobs)

@@ -34,6 +34,7 @@ import json
 import os
 import shlex
 import shutil
+import signal
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -121,6 +122,15 @@ def main():
         what = {"skip": f"left alone ({detail})", "fresh": f"starts ({detail})",
                 "resume": f"resumes from {os.path.basename(detail[0]) if detail else ''}"}[action]
         print(f"  {name}: {what}")
+    def stop(signum, _frame):
+        # Ctrl-C, or the end of a batch job: every run writes a restart file and quits, and
+        # the same command later resumes them.
+        print(f"run_study: signal {signum}: asking the runs under way to write a restart "
+              "file and stop; rerun the same command to resume", flush=True)
+        ensemble.stop_running_launches()
+        sys.exit(128 + signum)
+    signal.signal(signal.SIGTERM, stop)
+    signal.signal(signal.SIGINT, stop)
     launch = ensemble.launch_pool if args.mode == "pool" else ensemble.launch_partitions
     with StudyProgress(out, runs, args.parallel, args.progress_every) as progress:
         launches = launch(args.driver, out, runs, args.parallel, args.ranks_per_run, args.mpirun,

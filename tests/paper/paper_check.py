@@ -10,6 +10,15 @@ own files independently of the code it checks:
   snapshot  run_study.py collection --size tiny: the snapshot figure rendered from the run's
             own VTK files must exist and not be blank (many distinct colours, no single colour
             covering nearly all of it).
+  resume    run_study.py singlejump --size tiny (made longer) run once uninterrupted, and once
+            killed (SIGKILL to the runner and its runs, as when a sitting ends) past 40 % of
+            the run and started again with the same command. The second launch must resume
+            from a restart file (not start anew), finish, and give the uninterrupted run's
+            thermo rows: identical up to the restart step (the first launch's own rows), within
+            round-off for the first fluid steps after it (a LIGGGHTS restart equals a run split
+            at that step bit for bit, tests/faults; the split itself re-sorts the atoms, so
+            the chaotic run then drifts away), every thermo step of the uninterrupted run once,
+            and no burst recorded twice. A third launch leaves the finished run alone.
 
 Usage: paper_check.py --driver liggghts-lbm --repo <source root> --python /usr/bin/python3 <case>
 """
@@ -18,7 +27,9 @@ import json
 import os
 import subprocess
 import sys
+import signal
 import tempfile
+import time
 
 
 def check(name, ok, measured, bound):
@@ -106,15 +117,92 @@ def snapshot(args, work):
     return ok
 
 
+def resume(args, work):
+    sys.path.insert(0, os.path.join(args.repo, "examples", "paper"))
+    import study_io  # the analyses' own reader (superseding the rows a resume repeats)
+    base = ["singlejump", "--size", "tiny", "--set", "steps=1000000", "--no-analysis",
+            "--progress-every", "1"]
+    whole, cut = os.path.join(work, "whole"), os.path.join(work, "cut")
+    run_study(args, whole, *base)
+    run_dir = os.path.join(cut, "runs", "seed_100003")
+    log = os.path.join(run_dir, "log.liggghts")
+    cmd = [args.python, os.path.join(args.repo, "examples", "paper", "run_study.py"), *base,
+           "--driver", args.driver, "--out", cut]
+    runner = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                              start_new_session=True)
+    killed_at, deadline = None, time.time() + 150
+    while runner.poll() is None and time.time() < deadline:
+        time.sleep(0.05)
+        steps = thermo_column(log, "pore[16]")[0] if os.path.exists(log) else []
+        if steps and steps[-1] >= 0.4 * 1002000:
+            # The runner, then its run (its own process group): as a sitting that ends does.
+            os.killpg(runner.pid, signal.SIGKILL)
+            subprocess.run(["pkill", "-KILL", "-f", cut])
+            time.sleep(1)  # until the ranks are gone
+            killed_at = steps[-1]
+            break
+    runner.wait()
+    ok = check("killed mid-run", killed_at is not None and killed_at < 1002000, killed_at,
+               "a step between 40 % and the end")
+    second = run_study(args, cut, *base)
+    ok &= check("resumed, not restarted", "resumes from restart" in second.stdout,
+                [line for line in second.stdout.splitlines() if "seed_100003:" in line and "-var" not in line],
+                "'resumes from restart...'")
+    summary = json.load(open(os.path.join(cut, "summary.json")))
+    ok &= check("finished", summary["finished"] == 1, summary["finished"], "1 run done")
+    a = study_io.thermo(os.path.join(whole, "runs", "seed_100003"))
+    b = study_io.thermo(run_dir)
+    resumed_from = max(s for s in b["Step"] if s not in a["Step"]) if set(b["Step"]) - set(a["Step"]) \
+        else None  # the restart step prints a row of its own unless it is a thermo step
+    first_launch = [line for line in open(log, errors="replace")]
+    starts = [i for i, line in enumerate(first_launch) if line.startswith("STUDY_RUN_START")]
+    ok &= check("two launches in one log", len(starts) == 2, len(starts), "2 STUDY_RUN_START lines")
+    row_a = {s: i for i, s in enumerate(a["Step"])}
+    row_b = {s: i for i, s in enumerate(b["Step"])}
+    ok &= check("every thermo step once", set(a["Step"]) <= set(b["Step"])
+                and len(b["Step"]) == len(set(b["Step"])), (len(a["Step"]), len(b["Step"])),
+                "the uninterrupted run's steps, none twice")
+    # The restart step: the first row of the second launch's part of the log.
+    second_rows = [line.split() for line in first_launch[starts[-1]:]]
+    restart_step = next(float(w[0]) for w in second_rows
+                        if len(w) == len(study_io.thermo(run_dir)) and w[0].isdigit())
+    before = [s for s in a["Step"] if s <= restart_step]
+    same_before = all(a[c][row_a[s]] == b[c][row_b[s]] for s in before for c in a)
+    ok &= check("identical before the restart step", same_before and len(before) > 10,
+                f"{len(before)} rows up to step {restart_step:.0f} (resumed from {resumed_from})",
+                "bit for bit")
+    # P / P_out within round-off for about 5 fluid steps (1000 DEM steps of 178) after it.
+    after = [s for s in a["Step"] if restart_step < s <= restart_step + 1000]
+    worst = max((abs(a["pore[16]"][row_a[s]] - b["pore[16]"][row_b[s]]) / abs(a["pore[16]"][row_a[s]])
+                 for s in after), default=None)
+    ok &= check("P / P_out just after the restart", worst is not None and worst < 1e-6, worst,
+                "< 1e-6 relative")
+    burst_steps = [r["step"] for r in study_io.bursts(run_dir)]
+    raw = [line.split()[0] for line in open(os.path.join(run_dir, "bursts.txt"))
+           if line.strip() and not line.startswith("#")]
+    ok &= check("bursts read once each", len(burst_steps) == len(set(burst_steps)) and len(burst_steps) > 0,
+                f"{len(burst_steps)} read, {len(raw)} rows in the file", "no step twice, at least one")
+    progress = open(os.path.join(cut, "progress.txt")).read()
+    ok &= check("progress kept", "1 done" in progress and "time left" in progress, progress.strip(),
+                "'1 done ... time left'")
+    shown = [line for line in second.stdout.splitlines() if "progress:" in line and "seed_100003 " in line]
+    ok &= check("progress shows the running run's step", bool(shown), shown[-1:] if shown else None,
+                "a line with the run, its step and the time left")
+    third = run_study(args, cut, *base)
+    ok &= check("a finished run is left alone", "left alone (done)" in third.stdout
+                and "launch (" not in third.stdout.split("progress:")[-1], "see above", "left alone, no launch")
+    return ok
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--driver", required=True)
     parser.add_argument("--repo", required=True)
     parser.add_argument("--python", default="/usr/bin/python3")
-    parser.add_argument("case", choices=["ensemble", "snapshot"])
+    parser.add_argument("case", choices=["ensemble", "snapshot", "resume"])
     args = parser.parse_args()
     with tempfile.TemporaryDirectory(prefix=f"paper_{args.case}_") as work:
-        ok = {"ensemble": ensemble, "snapshot": snapshot}[args.case](args, work)
+        ok = {"ensemble": ensemble, "snapshot": snapshot, "resume": resume}[args.case](args, work)
     sys.exit(0 if ok else 1)
 
 
