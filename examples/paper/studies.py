@@ -184,8 +184,29 @@ def pvpflux(size):
                                thermo_extra="f_pore[3] f_pore[13]")) for p in pressures]
 
 
+def calibration(size):
+    """The inlet velocity, which the paper does not give: the table's scene at the paper's
+    resolution, u_lattice from 0.02 down, two seeds each (seed-major order, so that a study
+    cut short has every velocity once). Thermo rows every 10 fluid steps with the wall's
+    force along the flow (f_walls[2]) and the fluid's on the particles (f_pore[14]), to read
+    the hold at each pressure peak. quick: 2 x 10^5 fluid steps per run; paper: 10^6."""
+    velocities = _counts(size, [0.02, 0.005], [0.02, 0.01, 0.005, 0.0025], [0.02, 0.01, 0.005, 0.0025])
+    seeds = _seeds(_counts(size, 1, 2, 2))
+    lengths = {"tiny": {}, "quick": dict(cells_per_d=7.1, steps=20000000, warmup=200000),
+               "paper": dict(cells_per_d=7.1)}[size]
+    runs = []
+    for seed in seeds:
+        for u in velocities:
+            knobs = _base(size, seed=seed, u_lattice=u, thermo_extra="f_walls[2] f_pore[14]", **lengths)
+            knobs.update(scene(knobs["cells_per_d"]))
+            if size != "tiny":
+                knobs["thermo_every"] = 1000
+            runs.append((f"u_{u:g}_seed_{seed}", knobs))
+    return runs
+
+
 STUDIES = {f.__name__: f for f in (singlejump, collection, dropvol, porelength, porediameter,
-                                   phaseac, phasead, conc, pvpflux)}
+                                   phaseac, phasead, conc, pvpflux, calibration)}
 
 
 def runs_of(study, size):
