@@ -12,8 +12,10 @@ import sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "pore"))
 from plot_pressure import read_thermo  # noqa: E402  (the main example's log reader)
 
+# A burst file's columns (fix lbm/pore's burst_file); rows of files written before the last
+# three existed have the first ten.
 BURST_COLUMNS = ("step", "time", "P_peak", "P_after", "delta_P", "delta_t", "V_dep", "L_dep",
-                 "count_before", "count_after")
+                 "count_before", "count_after", "wall_F", "on_wall", "P_pi_D2_4")
 
 
 def lattice_timing(run_dir):

@@ -119,7 +119,7 @@ class FixLbmPore : public Fix {
   std::vector<coupling::ParticlePair> pairs_;       // the group's pairs of the neighbour list
   long long pairs_step_ = -1;                       // the neighbour build pairs_ is from (step)
   std::vector<contact::SurfacePoint> wall_points_;  // scratch of the wall searches
-  std::vector<char> bonded_atoms_, bonded_;         // scratch of the deposit count
+  std::vector<char> bonded_atoms_, bonded_, on_wall_;  // scratch of the deposit count
   class NeighList* list_ = nullptr;
   coupling::Vec3 gravity_{0.0, 0.0, 0.0};  // fix gravity's acceleration, 0 without one
   bool has_gravity_ = false;

@@ -16,6 +16,7 @@
 #include "fix_lbm_pore.h"
 #include "lbm/fluid_solver.h"
 #include "lbm/stability.h"
+#include "modify.h"
 #include "plugin_common/stop_run.h"
 #include "plugin_common/stop_signals.h"
 #include "update.h"
@@ -67,7 +68,9 @@ void FixLbmPore::check_fluid_state() {
 }
 
 // Deposits and particle fluxes (paper Sec. III), from the bonds the contact laws would form:
-// within the cohesion range of another particle or the adhesion range of the wall.
+// within the cohesion range of another particle or the adhesion range of the wall; and the
+// loads along the flow on the particles: the fluid's and, where a fix exposes this rank's
+// ("local_force", fix wall/voxel), the wall's.
 void FixLbmPore::record_particles() {
   collect_group_pairs();
   const int ntotal = atom->nlocal + atom->nghost;
@@ -75,20 +78,28 @@ void FixLbmPore::record_particles() {
   coupling::mark_cohesive_bonds(atoms_view(), pairs_, bonded_atoms_);
   const auto view = particles_.view();
   bonded_.assign(view.num_total, 0);
-  double force_x = 0.0;
+  on_wall_.assign(view.num_total, 0);
+  coupling::PoreMonitor::ParticleLoads loads;
   for (std::size_t p = 0; p < view.num_total; ++p) {
     const int i = particles_.atom(p);
-    bonded_[p] = bonded_atoms_[i];
-    if (p >= view.num_owned) continue;
-    force_x += state_[i].load.force[0];
-    if (bonded_[p]) continue;
+    if (p >= view.num_owned) {
+      bonded_[p] = bonded_atoms_[i];
+      continue;
+    }
+    loads.fluid_force += state_[i].load.force[0];
     const double* x = atom->x[i];
     // With lubrication on, find_walls() searched this fluid step already, over a wider reach.
-    bonded_[p] = options_.lubrication
-                     ? state_[i].wall.known && coupling::within_adhesion_range(state_[i].wall.distance, atom->radius[i])
-                     : coupling::adheres_to_wall(*surface_, {x[0], x[1], x[2]}, atom->radius[i], wall_points_);
+    on_wall_[p] = options_.lubrication
+                      ? state_[i].wall.known && coupling::within_adhesion_range(state_[i].wall.distance, atom->radius[i])
+                      : coupling::adheres_to_wall(*surface_, {x[0], x[1], x[2]}, atom->radius[i], wall_points_);
+    bonded_[p] = bonded_atoms_[i] || on_wall_[p];
   }
-  monitor_->record_particles(view, bonded_, force_x, solver_->decomposition().comm);
+  for (int f = 0; f < modify->nfix; ++f) {
+    int dim = 0;
+    const auto* wall = static_cast<const double*>(modify->fix[f]->extract("local_force", dim));
+    if (wall && dim == 1) loads.wall_force += wall[0];
+  }
+  monitor_->record_particles(view, bonded_, on_wall_, loads, solver_->decomposition().comm);
 }
 
 // The pressure loss in units of P_out and the burst detector, after every fluid step; a

@@ -193,6 +193,7 @@ coupling::BurstUnits burst_units(const std::string& unit_style) {
     units.time = "s";
     units.length = unit_style == "si" ? "m" : "cm";
     units.volume = units.length + "^3";
+    units.force = unit_style == "si" ? "N" : "dyn";
   }
   return units;
 }

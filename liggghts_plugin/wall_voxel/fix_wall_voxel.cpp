@@ -209,6 +209,12 @@ void FixWallVoxel::report_dropped_springs(int i, int dropped) {
     std::fprintf(stderr, "WARNING on proc %d: %s\n", comm->me, text);
 }
 
+void* FixWallVoxel::extract(const char* name, int& dim) {
+  if (std::strcmp(name, "local_force") != 0) return nullptr;
+  dim = 1;
+  return &local_stats_[1];
+}
+
 double FixWallVoxel::compute_vector(int index) {
   if (index == 4) return guards_.time_step_limit();
   if (!stats_reduced_) {

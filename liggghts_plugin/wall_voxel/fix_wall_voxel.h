@@ -43,6 +43,10 @@ class FixWallVoxel : public Fix {
   void setup(int vflag) override;
   void post_force(int vflag) override;
   double compute_vector(int index) override;
+  // "local_force": this rank's total wall force on the group at the last step (3 doubles,
+  // dim 1), for fix lbm/pore's burst records (the wall's hold at a pressure peak) without
+  // another reduction; nothing else.
+  void* extract(const char* name, int& dim) override;
 
   // Per-atom tangential springs travel with their atoms and go to restart files
   // (fix_wall_voxel_peratom.cpp).

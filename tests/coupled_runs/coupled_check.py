@@ -69,6 +69,27 @@ def case_clog(h):
           f"pressure loss {final:.4g} vs particle-free {clean:.4g}: ratio > 2")
     check("clog_deposited_count", last["pore[7]"] > 0, f"{last['pore[7]']:.0f}",
           "> 0 particles deposited (in the pore's cylinder, bonded, slower than 10 % of u)")
+    # The hold the burst records carry: fix lbm/pore's wall force along the flow is fix
+    # wall/voxel's own total at the same step (thermo steps are fluid steps), the jam is held
+    # against the flow, and the deposits on the wall are some of the deposited ones.
+    rows = [r for r in thermo_rows(out) if "walls[2]" in r]
+    worst = max(abs(r["pore[25]"] - r["walls[2]"]) / max(abs(r["walls[2]"]), 1e-300) for r in rows
+                if r["walls[2]"] != 0.0)
+    check("clog_wall_hold_is_the_wall_fix_total", worst < 1e-12, f"{worst:.3g}",
+          "relative difference < 1e-12 at every thermo row with a wall force")
+    check("clog_wall_holds_against_the_flow", last["pore[25]"] < 0, f"{last['pore[25]']:.4g}", "< 0")
+    # The jam at rest passes the fluid's push on to the wall: the wall's hold balances the
+    # hydrodynamic force on the particles (their pair forces cancel), and that force is the
+    # pressure loss on the pore's section, P pi D^2 / 4 (paper, theory section), to within
+    # the clean pore's own loss and the fluid's shear on the wall.
+    balance = abs(last["pore[25]"] + last["pore[14]"]) / abs(last["pore[14]"])
+    check("clog_wall_hold_balances_the_fluid", balance < 0.02, f"{balance:.3g}",
+          f"|wall + fluid| / fluid < 0.02 (wall {last['pore[25]']:.4g}, fluid {last['pore[14]']:.4g})")
+    section = final * math.pi * 11.0 ** 2 / 4.0
+    check("clog_hold_is_the_pressure_on_the_section", 0.7 < -last["pore[25]"] / section < 1.3,
+          f"{-last['pore[25]'] / section:.3g}", f"wall hold / (P pi D^2 / 4 = {section:.4g}) within 0.7 ... 1.3")
+    check("clog_deposits_on_the_wall", 0 < last["pore[26]"] <= last["pore[7]"],
+          f"{last['pore[26]']:.0f} of {last['pore[7]']:.0f}", "0 < on the wall <= deposited")
 
 
 def case_clog_pressure(h):

@@ -30,6 +30,10 @@ struct Signal {
     s.deposited_count = count(t);
     s.deposited_volume = 1000.0 * s.deposited_count;
     s.deposited_length = 2.0 * s.deposited_count;
+    // The holds: the wall's force against the flow, deposits on the wall and P pi D^2 / 4.
+    s.wall_force = -0.5 * s.deposited_count;
+    s.deposited_on_wall = s.deposited_count / 2;
+    s.pressure_force = 7.0 * s.pressure_loss;
     return s;
   }
 };
@@ -75,11 +79,18 @@ TEST(BurstDetector, RampThenSharpDropIsOneBurst) {
   EXPECT_DOUBLE_EQ(b.deposited_length, 20.0);
   EXPECT_EQ(b.count_before, 10);
   EXPECT_EQ(b.count_after, 3);
+  // The holds are the peak's (10 deposited): the wall's force, those on the wall, P pi D^2/4.
+  EXPECT_DOUBLE_EQ(b.wall_force, -5.0);
+  EXPECT_EQ(b.on_wall, 5);
+  EXPECT_DOUBLE_EQ(b.pressure_force, 7.0 * peak);
   EXPECT_DOUBLE_EQ(detector.largest_pressure_loss(), peak);
   const auto row = b.row();
   ASSERT_EQ(row.size(), std::size_t(BurstRecord::kColumns));
   EXPECT_EQ(row[0], 300000.0);
   EXPECT_EQ(row[9], 3.0);
+  EXPECT_EQ(row[10], -5.0);
+  EXPECT_EQ(row[11], 5.0);
+  EXPECT_DOUBLE_EQ(row[12], 7.0 * peak);
 }
 
 TEST(BurstDetector, RecordedAWindowAfterTheFallEnds) {
@@ -203,7 +214,7 @@ TEST(BurstDetector, FlushRecordsABurstStillBeingFollowed) {
 TEST(BurstFileWriter, HeaderOnceThenOneRowPerBurst) {
   const std::string path = ::testing::TempDir() + "bursts_test.txt";
   std::remove(path.c_str());
-  BurstUnits units{"fs", "Pa", "um^3", "um"};
+  BurstUnits units{"fs", "Pa", "um^3", "um", "nN"};
   BurstRecord r;
   r.step = 42;
   r.time = 1.5;
@@ -215,6 +226,9 @@ TEST(BurstFileWriter, HeaderOnceThenOneRowPerBurst) {
   r.deposited_length = 4.0;
   r.count_before = 7;
   r.count_after = 2;
+  r.wall_force = -3.5;
+  r.on_wall = 4;
+  r.pressure_force = 6.25;
   { BurstFileWriter(path, units, false).write(r); }  // a stale file of an earlier run
   { BurstFileWriter(path, units, false).write(r); }  // a fresh run starts the file anew
   { BurstFileWriter(path, units, true).write(r); }   // a restarted run appends, no second header
@@ -223,7 +237,7 @@ TEST(BurstFileWriter, HeaderOnceThenOneRowPerBurst) {
   text << in.rdbuf();
   EXPECT_EQ(text.str(),
             "# step time[fs] P_peak[Pa] P_after[Pa] delta_P[Pa] delta_t[fs] V_dep[um^3] "
-            "L_dep[um] count_before count_after\n"
-            "42 1.5 2 1 1 0.25 300 4 7 2\n42 1.5 2 1 1 0.25 300 4 7 2\n");
+            "L_dep[um] count_before count_after wall_F[nN] on_wall P_pi_D2_4[nN]\n"
+            "42 1.5 2 1 1 0.25 300 4 7 2 -3.5 4 6.25\n42 1.5 2 1 1 0.25 300 4 7 2 -3.5 4 6.25\n");
   EXPECT_THROW(BurstFileWriter("/nonexistent/dir/bursts.txt", units, false), std::runtime_error);
 }

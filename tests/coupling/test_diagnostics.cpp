@@ -26,6 +26,14 @@ TEST(Diagnostics, DepositedVolumeCountsBondedSlowParticlesInThePore) {
   EXPECT_EQ(d.count, 1);
   EXPECT_NEAR(d.volume, v, 1e-12);
   EXPECT_NEAR(d.length, v / (cases::kPi * 16.0), 1e-12);
+  EXPECT_EQ(d.on_wall, 0);  // no wall flags given
+  // Of the deposited particles, those flagged as touching the wall; the others' flags
+  // (too fast, outside, unbonded) do not count.
+  p.add(6, {8, 5, 5}, {0, 0, 0}, 2.0);  // deposited too, not on the wall
+  const std::vector<char> bonded6{1, 1, 1, 1, 0, 1}, on_wall{1, 1, 1, 1, 1, 0};
+  const Deposition w = deposited(p.view(), bonded6, pore, DepositionCriteria{}, lbm::Communicator{}, &on_wall);
+  EXPECT_EQ(w.count, 2);
+  EXPECT_EQ(w.on_wall, 1);
 }
 
 TEST(Diagnostics, PlaneCrossingsAreCountedWithDirection) {

@@ -65,14 +65,15 @@ TEST(PoreMonitor, DepositsAndCrossingsInHostUnits) {
   set.add(1, {3.0, 5.5, 5.5}, {0, 0, 0}, 1.0);   // upstream of the inlet plane
   set.add(2, {10.0, 5.5, 5.5}, {0, 0, 0}, 1.5);  // in the pore, at rest
   const lbm::Communicator serial;
-  monitor.record_particles(set.view(), {1, 1}, 0.75, serial);
+  // Particle 2 (deposited) touches the wall; the wall holds them with -0.5 along the flow.
+  monitor.record_particles(set.view(), {1, 1}, {0, 1}, {0.75, -0.5}, serial);
   const double V = 4.0 / 3.0 * M_PI * 1.5 * 1.5 * 1.5;
   EXPECT_NEAR(monitor.values()[PoreMonitor::kDepositedVolume], V * 8.0, 1e-12);
   EXPECT_EQ(monitor.values()[PoreMonitor::kDepositedCount], 1.0);
   EXPECT_NEAR(monitor.values()[PoreMonitor::kDepositedLength], V / (M_PI * 16.0) * 2.0, 1e-12);
   EXPECT_EQ(monitor.values()[PoreMonitor::kHydroForceX], 0.75);
   set.set_position(0, {4.0, 5.5, 5.5});  // crosses the inlet plane downstream
-  monitor.record_particles(set.view(), {1, 1}, 0.0, serial);
+  monitor.record_particles(set.view(), {1, 1}, {0, 0}, {}, serial);
   EXPECT_EQ(monitor.values()[PoreMonitor::kParticlesIn], 1.0);
   EXPECT_NEAR(monitor.values()[PoreMonitor::kParticlesInVolume], 4.0 / 3.0 * M_PI * 8.0, 1e-12);
 
@@ -102,7 +103,7 @@ TEST(PoreMonitor, ClosedBoxGivesAFinitePoreDiameterAndDepositLength) {
   PoreMonitor monitor(setup, units);
   ParticleSet set;
   set.add(1, {2.5, 1.5, 1.5}, {0, 0, 0}, 1.0);
-  monitor.record_particles(set.view(), {1}, 0.0, lbm::Communicator());
+  monitor.record_particles(set.view(), {1}, {0}, {}, lbm::Communicator());
   EXPECT_EQ(monitor.values()[PoreMonitor::kDepositedLength], 0.0);
   for (double v : monitor.values()) EXPECT_TRUE(std::isfinite(v));
 }

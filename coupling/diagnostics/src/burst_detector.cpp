@@ -10,7 +10,9 @@ std::vector<double> BurstRecord::row() const {
           peak_pressure,        pressure_after,
           pressure_drop,        duration,
           deposited_volume,     deposited_length,
-          double(count_before), double(count_after)};
+          double(count_before), double(count_after),
+          wall_force,           double(on_wall),
+          pressure_force};
 }
 
 BurstDetector::BurstDetector(const BurstCriteria& criteria) : criteria_(criteria) {
@@ -31,6 +33,9 @@ BurstRecord BurstDetector::record() const {
   r.deposited_length = peak_.deposited_length;
   r.count_before = peak_.deposited_count;
   r.count_after = minimum_.deposited_count;
+  r.wall_force = peak_.wall_force;
+  r.on_wall = peak_.deposited_on_wall;
+  r.pressure_force = peak_.pressure_force;
   return r;
 }
 
@@ -87,12 +92,13 @@ std::optional<BurstRecord> BurstDetector::flush() {
 
 namespace {
 
-constexpr double kStateVersion = 1.0;
-constexpr int kSampleSize = 7;
+constexpr double kStateVersion = 2.0;  // 2: samples and records with the wall's hold
+constexpr int kSampleSize = 10;
 
 void put(std::vector<double>& out, const PressureSample& s) {
   out.insert(out.end(), {double(s.fluid_step), double(s.step), s.time, s.pressure_loss,
-                         s.deposited_volume, s.deposited_length, double(s.deposited_count)});
+                         s.deposited_volume, s.deposited_length, double(s.deposited_count),
+                         s.wall_force, double(s.deposited_on_wall), s.pressure_force});
 }
 
 PressureSample take(const double* in) {
@@ -104,6 +110,9 @@ PressureSample take(const double* in) {
   s.deposited_volume = in[4];
   s.deposited_length = in[5];
   s.deposited_count = static_cast<long long>(in[6]);
+  s.wall_force = in[7];
+  s.deposited_on_wall = static_cast<long long>(in[8]);
+  s.pressure_force = in[9];
   return s;
 }
 
@@ -119,6 +128,9 @@ BurstRecord take_record(const double* in) {
   r.deposited_length = in[7];
   r.count_before = static_cast<long long>(in[8]);
   r.count_after = static_cast<long long>(in[9]);
+  r.wall_force = in[10];
+  r.on_wall = static_cast<long long>(in[11]);
+  r.pressure_force = in[12];
   return r;
 }
 
@@ -169,7 +181,8 @@ void BurstDetector::restore(const std::vector<double>& state) {
 std::string BurstFileWriter::header(const BurstUnits& u) {
   return "# step time[" + u.time + "] P_peak[" + u.pressure + "] P_after[" + u.pressure +
          "] delta_P[" + u.pressure + "] delta_t[" + u.time + "] V_dep[" + u.volume + "] L_dep[" +
-         u.length + "] count_before count_after\n";
+         u.length + "] count_before count_after wall_F[" + u.force + "] on_wall P_pi_D2_4[" +
+         u.force + "]\n";
 }
 
 BurstFileWriter::BurstFileWriter(const std::string& path, const BurstUnits& units, bool append) {
@@ -187,9 +200,9 @@ BurstFileWriter::~BurstFileWriter() {
 }
 
 void BurstFileWriter::write(const BurstRecord& r) {
-  std::fprintf(file_, "%lld %.10g %.10g %.10g %.10g %.10g %.10g %.10g %lld %lld\n", r.step, r.time,
-               r.peak_pressure, r.pressure_after, r.pressure_drop, r.duration, r.deposited_volume,
-               r.deposited_length, r.count_before, r.count_after);
+  std::fprintf(file_, "%lld %.10g %.10g %.10g %.10g %.10g %.10g %.10g %lld %lld %.10g %lld %.10g\n", r.step,
+               r.time, r.peak_pressure, r.pressure_after, r.pressure_drop, r.duration, r.deposited_volume,
+               r.deposited_length, r.count_before, r.count_after, r.wall_force, r.on_wall, r.pressure_force);
   std::fflush(file_);
 }
 

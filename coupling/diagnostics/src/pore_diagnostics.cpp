@@ -12,8 +12,9 @@ constexpr double kPi = 3.14159265358979323846;
 }
 
 Deposition deposited(const ParticleView& view, const std::vector<char>& bonded, const PoreRegion& pore,
-                     const DepositionCriteria& criteria, const lbm::Communicator& comm) {
-  double sums[2] = {0.0, 0.0};
+                     const DepositionCriteria& criteria, const lbm::Communicator& comm,
+                     const std::vector<char>* on_wall) {
+  double sums[3] = {0.0, 0.0, 0.0};
   const int a = pore.axis, b = (a + 1) % 3, c = (a + 2) % 3;
   const int lo = std::min(b, c), hi = std::max(b, c);
   for (std::size_t p = 0; p < view.num_owned; ++p) {
@@ -27,11 +28,13 @@ Deposition deposited(const ParticleView& view, const std::vector<char>& bonded, 
     const double R = view.r(p);
     sums[0] += 4.0 / 3.0 * kPi * R * R * R;
     sums[1] += 1.0;
+    if (on_wall && p < on_wall->size() && (*on_wall)[p]) sums[2] += 1.0;
   }
-  comm.sum(sums, 2);
+  comm.sum(sums, 3);
   Deposition d;
   d.volume = sums[0];
   d.count = (long long)std::llround(sums[1]);
+  d.on_wall = (long long)std::llround(sums[2]);
   d.length = pore.diameter > 0.0 ? d.volume / (kPi * pore.diameter * pore.diameter / 4.0) : 0.0;
   return d;
 }

@@ -49,10 +49,12 @@ PoreMonitor::PoreMonitor(const PoreMonitorSetup& setup, const UnitConversion& un
       detector_(setup.bursts) {}
 
 void PoreMonitor::record_particles(const ParticleView& view, const std::vector<char>& bonded,
-                                   double local_force_x, const lbm::Communicator& comm) {
+                                   const std::vector<char>& on_wall, const ParticleLoads& local,
+                                   const lbm::Communicator& comm) {
   const double dx = units_.inputs().dx;
   const double volume_unit = dx * dx * dx;
-  const auto deposit = deposited(view, bonded, setup_.pore, setup_.criteria, comm);
+  const auto deposit = deposited(view, bonded, setup_.pore, setup_.criteria, comm, &on_wall);
+  values_[kDepositedOnWall] = double(deposit.on_wall);
   auto& v = values_;
   v[kDepositedVolume] = deposit.volume * volume_unit;
   v[kDepositedCount] = double(deposit.count);
@@ -66,9 +68,10 @@ void PoreMonitor::record_particles(const ParticleView& view, const std::vector<c
   v[kParticlesOut] += double(out.count);
   v[kParticlesInVolume] += in.volume * volume_unit;
   v[kParticlesOutVolume] += out.volume * volume_unit;
-  double force_x = local_force_x;
-  comm.sum(&force_x, 1);
-  v[kHydroForceX] = force_x;
+  double forces[2] = {local.fluid_force, local.wall_force};
+  comm.sum(forces, 2);
+  v[kHydroForceX] = forces[0];
+  v[kWallForceX] = forces[1];
 }
 
 double PoreMonitor::value(int quantity, const lbm::FluidSolver& solver, long long fluid_steps) {
@@ -149,6 +152,11 @@ std::optional<BurstRecord> PoreMonitor::record_fluid_step(const lbm::FluidSolver
   sample.deposited_volume = values_[kDepositedVolume];
   sample.deposited_length = values_[kDepositedLength];
   sample.deposited_count = static_cast<long long>(values_[kDepositedCount]);
+  sample.wall_force = values_[kWallForceX];
+  sample.deposited_on_wall = static_cast<long long>(values_[kDepositedOnWall]);
+  // P pi D^2 / 4: the pressure loss's push on the pore's cross-section (paper, theory section).
+  const double D = setup_.pore_diameter * units_.inputs().dx;
+  sample.pressure_force = units_.pressure_to_physical(pressure * outlet_pressure(solver)) * M_PI * D * D / 4.0;
   auto burst = detector_.add(sample);
   values_[kLargestPressureLoss] = detector_.largest_pressure_loss();
   if (burst && burst->count_before < setup_.burst_min_deposited) burst.reset();

@@ -54,6 +54,12 @@ struct PressureSample {
   double deposited_volume = 0.0;  // V_dep
   double deposited_length = 0.0;  // L_dep
   long long deposited_count = 0;
+  // The hold the paper's force balance asks about (its theory section: P pi D^2 / 4 carried
+  // by the deposit's grip on the pore wall): the wall's total force on the particles along
+  // the flow, the deposited particles that touch the wall, and P pi D^2 / 4 (force units).
+  double wall_force = 0.0;
+  long long deposited_on_wall = 0;
+  double pressure_force = 0.0;
 };
 
 // One erosive burst: the peak and the minimum after it.
@@ -68,8 +74,11 @@ struct BurstRecord {
   double deposited_length = 0.0;  // L_dep at the peak
   long long count_before = 0;     // deposited particles at the peak
   long long count_after = 0;      // ... at the minimum
+  double wall_force = 0.0;        // the wall's force on the particles along the flow, at the peak
+  long long on_wall = 0;          // deposited particles touching the wall, at the peak
+  double pressure_force = 0.0;    // P_peak pi D^2 / 4 in force units: what the holds must carry
 
-  static constexpr int kColumns = 10;
+  static constexpr int kColumns = 13;
   // The record as kColumns numbers, in the order above (a row of the fix's array).
   std::vector<double> row() const;
 };
@@ -119,7 +128,8 @@ class BurstDetector {
 // run resumed from a restart file appends (`append`), and the header is written only when
 // the file is new or empty, so the restarted run continues the same file. Rank 0 only.
 struct BurstUnits {
-  std::string time = "time", pressure = "pressure", volume = "volume", length = "length";
+  std::string time = "time", pressure = "pressure", volume = "volume", length = "length",
+              force = "force";
 };
 
 class BurstFileWriter {

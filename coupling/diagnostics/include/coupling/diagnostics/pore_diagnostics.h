@@ -43,10 +43,14 @@ struct Deposition {
   double volume = 0.0;
   double length = 0.0;
   long long count = 0;
+  long long on_wall = 0;  // of them, those the caller flags as touching the pore wall
 };
 
+// on_wall (indexed like the view, may be null): which particles touch the wall (within the
+// adhesion range), to count the deposited ones that hold on to it directly.
 Deposition deposited(const ParticleView& view, const std::vector<char>& bonded, const PoreRegion& pore,
-                     const DepositionCriteria& criteria, const lbm::Communicator& comm);
+                     const DepositionCriteria& criteria, const lbm::Communicator& comm,
+                     const std::vector<char>* on_wall = nullptr);
 
 // Counts owned particles whose centre crossed the plane x_axis = position since the previous
 // call (matched by id): +1 and +volume in the +axis direction, -1 and -volume back. Periodic

@@ -76,16 +76,26 @@ class PoreMonitor {
     // The budget: in - out = change of held + displaced - surfaces - refill.
     kParticleSurfaceMass,
     kParticleRefillMass,
+    // The hold of the paper's force balance: the wall's force on the particles along the
+    // flow (force units; from the host's wall, 0 without one) and the deposited particles
+    // that touch the wall.
+    kWallForceX,
+    kDepositedOnWall,
     kCount
   };
 
   PoreMonitor(const PoreMonitorSetup& setup, const UnitConversion& units);
 
-  // At a fluid step: the particles (lattice view of the step), which of them are bonded
-  // (indexed like the view) and this rank's hydrodynamic force along the flow (host units).
-  // Collective over `comm`.
+  // At a fluid step: the particles (lattice view of the step), which of them are bonded and
+  // which touch the wall (indexed like the view), this rank's hydrodynamic force on them
+  // along the flow and the wall's (host units). Collective over `comm`.
+  struct ParticleLoads {
+    double fluid_force = 0.0;  // this rank's hydrodynamic force on its particles along the flow
+    double wall_force = 0.0;   // the wall's on them (0 where the host has no wall forces)
+  };
   void record_particles(const ParticleView& view, const std::vector<char>& bonded,
-                        double local_force_x, const lbm::Communicator& comm);
+                        const std::vector<char>& on_wall, const ParticleLoads& local,
+                        const lbm::Communicator& comm);
   // The largest particle shift of the step (cells, already reduced over ranks).
   void record_particle_shift(double cells) { values_[kMaxParticleShift] = cells; }
   // After a coupled fluid step: this rank's surface and refill mass of the step
