@@ -10,6 +10,11 @@ def slope(x, y):
     return np.polyfit(x, y, 1)[0] if len(x) > 1 and np.ptp(x) > 0 else np.nan
 
 
+def intercept(x, y):
+    """Least-squares a of y = a + b x (the clean pore's share of a fit with an intercept)."""
+    return np.polyfit(x, y, 1)[1] if len(x) > 1 and np.ptp(x) > 0 else np.nan
+
+
 def slope_through_origin(x, y):
     """Least-squares b of y = b x (the paper's P = K L_dep / D, a line through 0)."""
     x, y = np.asarray(x, float), np.asarray(y, float)

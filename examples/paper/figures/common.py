@@ -34,6 +34,61 @@ def burst_fit(summary, x_key, statistic):
     return groups, bootstrap(groups, statistic), bootstrap(groups, pearson)
 
 
+def clean_pressure(run, share=0.25):
+    """P_0 [P_out]: the run's own particle-free pressure loss, the mean of P / P_out
+    (f_pore[16]) over the thermo rows of the last `share` of its warm-up (the start-up
+    transient is over by then; in.pore's warm-up). NaN without such rows."""
+    columns = thermo(run["folder"])
+    warmup = float(run["knobs"].get("warmup", 0))
+    rows = [p for s, p in zip(columns.get("Step", []), columns.get("pore[16]", []))
+            if (1 - share) * warmup < s <= warmup]
+    return float(np.mean(rows)) if rows else np.nan
+
+
+def pressure_fits(summary, x_of):
+    """The fits of the peak pressure against x_of(run, burst), the same three for every
+    figure so that like is compared with like: the paper's line through the origin on P, the
+    same on the pressure the deposit adds, P - P_0 (P_0 = clean_pressure of each run), and a
+    line with an intercept on P. Each value (value, low, high) with fit_stats.bootstrap's
+    interval over runs; also the Pearson coefficient and the per-run point groups."""
+    from fit_stats import bootstrap, intercept, pearson, slope, slope_through_origin
+    groups, excess = [], []
+    for run in finished_runs(summary):
+        rows = bursts(run["folder"])
+        p0 = clean_pressure(run)
+        x = [x_of(run, b) for b in rows]
+        groups.append((x, [b["P_peak"] for b in rows]))
+        excess.append((x, [b["P_peak"] - p0 for b in rows] if np.isfinite(p0) else []))
+    excess = [(x, y) for x, y in excess if len(y)]
+    return dict(groups=groups, excess_groups=excess,
+                through_origin=bootstrap(groups, slope_through_origin),
+                excess_through_origin=bootstrap(excess, slope_through_origin),
+                slope=bootstrap(groups, slope), intercept=bootstrap(groups, intercept),
+                pearson=bootstrap(groups, pearson))
+
+
+def fits_text(fits):
+    """The three fits in one line, for results.json and the plot's title."""
+    from fit_stats import fmt
+    return (f"through 0: {fmt(*fits['through_origin'])}; P - P_0 through 0: "
+            f"{fmt(*fits['excess_through_origin'])}; with intercept: {fmt(*fits['slope'])} "
+            f"(intercept {fmt(*fits['intercept'])})")
+
+
+def draw_fits(ax, fits, top, paper=None, paper_label="paper"):
+    """The three fitted lines (and the paper's through 0) from 0 to top."""
+    xs = np.linspace(0, top, 2)
+    if np.isfinite(fits["through_origin"][0]):
+        ax.plot(xs, fits["through_origin"][0] * xs, "C3--", label="ours, P through 0")
+    if np.isfinite(fits["excess_through_origin"][0]):
+        ax.plot(xs, fits["excess_through_origin"][0] * xs, "C2-.", label="ours, P - P_0 through 0")
+    if np.isfinite(fits["slope"][0]):
+        ax.plot(xs, fits["intercept"][0] + fits["slope"][0] * xs, "C1-", lw=1,
+                label="ours, P with intercept")
+    if paper is not None:
+        ax.plot(xs, paper * xs, "k:", label=f"{paper_label}: {paper}")
+
+
 def result(summary, figure, quantity, paper, ours, out_png, **more):
     r = dict(figure=figure, quantity=quantity, paper=paper, ours=ours, plot=out_png,
              runs=len(summary["runs"]), finished=summary["finished"], size=summary["size"])

@@ -1,0 +1,149 @@
+"""The analyses' fits on synthetic data with known answers (ctest paper_fits): the fit
+functions of examples/paper/fit_stats.py, and the figures' fits on runs written here (thermo
+rows of a warm-up and burst rows) whose peaks are P = P_0 + c x exactly, so that each fit
+must return what it is defined to measure:
+  - through the origin on P: c + P_0 / x weighted, not c (what the old fits reported);
+  - through the origin on P - P_0 (P_0 read from each run's own warm-up): c;
+  - with an intercept: c and P_0.
+Also the V_dep units of dropvol (per D^3 and per pore volume) and the bootstrap's interval.
+
+Usage: test_fits.py <source root>   (or python3 -m unittest with LBM_PORE_REPO set)
+"""
+import math
+import os
+import random
+import sys
+import tempfile
+import unittest
+
+REPO = os.environ.get("LBM_PORE_REPO") or (sys.argv.pop(1) if len(sys.argv) > 1 else
+                                           os.path.join(os.path.dirname(__file__), "..", ".."))
+sys.path.insert(0, os.path.join(REPO, "examples", "paper"))
+
+import numpy as np  # noqa: E402
+
+import fit_stats  # noqa: E402
+from figures import common, dropvol  # noqa: E402
+
+# As LIGGGHTS prints the header of in.pore's thermo_style (f_ and c_ dropped).
+HEADER = ("Step Atoms pore[1] pore[6] pore[7] pore[8] pore[4] pore[5] pore[10] bonds walls[1] "
+          "pore[16] pore[17] pore[18]")
+
+
+def write_run(folder, p0, bursts, warmup=2000, D=3.5, Lp=4.25):
+    """A finished run: a log whose warm-up rows hold P / P_out = p0 (after a start-up
+    overshoot), and a burst file with the given (V_dep, L_dep, P_peak) rows."""
+    os.makedirs(folder)
+    names = HEADER.split()
+    with open(os.path.join(folder, "log.liggghts"), "w") as f:
+        f.write("fix lbm/pore: ... dt_lbm = 1 (n_dem = 100 x dt_dem = 0.01), dx = 0.140845\n")
+        f.write(HEADER + "\n")
+        for step in range(0, 2 * warmup + 1, 100):
+            p = 3.0 * p0 if step < warmup / 2 else p0  # the overshoot must not enter P_0
+            row = dict.fromkeys(names, 0.0)
+            row.update({"Step": step, "pore[16]": p, "pore[17]": 3.0 * p0})
+            f.write(" ".join(f"{row[n]:.12g}" for n in names) + "\n")
+    with open(os.path.join(folder, "bursts.txt"), "w") as f:
+        f.write("# step time P_peak P_after delta_P delta_t V_dep L_dep count_before count_after "
+                "wall_F on_wall P_pi_D2_4\n")
+        for k, (v, length, p) in enumerate(bursts):
+            f.write(f"{10000 + 100 * k} 0 {p!r} {0.5 * p!r} {0.5 * p!r} 1 {v!r} {length!r} 5 2 -1 3 1\n")
+    return dict(name=os.path.basename(folder), state="done", folder=folder,
+                knobs=dict(warmup=str(warmup), D=str(D), Lp=str(Lp)))
+
+
+class FitFunctions(unittest.TestCase):
+    def test_exact_lines(self):
+        x = np.array([0.5, 1.0, 2.0, 3.0])
+        self.assertAlmostEqual(fit_stats.slope_through_origin(x, 2.0 * x), 2.0, places=12)
+        self.assertAlmostEqual(fit_stats.slope(x, 0.3 + 1.5 * x), 1.5, places=12)
+        self.assertAlmostEqual(fit_stats.intercept(x, 0.3 + 1.5 * x), 0.3, places=12)
+        self.assertAlmostEqual(fit_stats.pearson(x, 0.3 + 1.5 * x), 1.0, places=12)
+        # Through the origin, a line with an intercept is not its slope: c + a sum(x) / sum(x^2).
+        expected = 1.5 + 0.3 * x.sum() / (x @ x)
+        self.assertAlmostEqual(fit_stats.slope_through_origin(x, 0.3 + 1.5 * x), expected, places=12)
+
+    def test_degenerate_inputs_give_nan(self):
+        for f in (fit_stats.slope, fit_stats.intercept, fit_stats.pearson):
+            self.assertTrue(math.isnan(f(np.array([1.0, 1.0]), np.array([2.0, 3.0]))))
+        self.assertTrue(math.isnan(fit_stats.slope_through_origin(np.zeros(3), np.ones(3))))
+
+    def test_bootstrap_of_exact_data_has_no_spread_and_of_noisy_data_covers_the_truth(self):
+        x = [np.array([1.0, 2.0]), np.array([0.5, 3.0]), np.array([1.5, 2.5])]
+        groups = [(xi, 0.7 * xi) for xi in x]
+        value, low, high = fit_stats.bootstrap(groups, fit_stats.slope_through_origin)
+        self.assertAlmostEqual(value, 0.7, places=12)
+        self.assertAlmostEqual(low, 0.7, places=12)
+        self.assertAlmostEqual(high, 0.7, places=12)
+        rng = random.Random(7)
+        noisy = []
+        for _ in range(30):
+            xi = np.array([rng.uniform(0.2, 2.0) for _ in range(4)])
+            noisy.append((xi, 0.7 * xi + np.array([rng.gauss(0, 0.05) for _ in range(4)])))
+        value, low, high = fit_stats.bootstrap(noisy, fit_stats.slope_through_origin)
+        self.assertLess(low, 0.7)
+        self.assertGreater(high, 0.7)
+        self.assertLess(high - low, 0.1)
+        one = fit_stats.bootstrap(groups[:1], fit_stats.slope_through_origin)
+        self.assertTrue(math.isnan(one[1]) and math.isnan(one[2]))
+
+
+class FiguresCompareLikeWithLike(unittest.TestCase):
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.c = 0.95
+        self.runs = []
+        # Two runs with different clean losses; peaks P = P_0 + c L_dep exactly.
+        for k, (p0, lengths) in enumerate(((0.08, [0.05, 0.4, 1.2]), (0.06, [0.1, 0.9, 2.0]))):
+            rows = [(length * math.pi * 3.5 ** 2 / 4, length, p0 + self.c * length) for length in lengths]
+            self.runs.append(write_run(os.path.join(self.tmp.name, f"run{k}"), p0, rows))
+        self.summary = dict(runs=self.runs, finished=len(self.runs), study="porelength", size="tiny",
+                            core_hours=0.0)
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def test_clean_pressure_is_the_end_of_the_warm_up(self):
+        self.assertAlmostEqual(common.clean_pressure(self.runs[0]), 0.08, places=12)
+        self.assertAlmostEqual(common.clean_pressure(self.runs[1]), 0.06, places=12)
+
+    def test_the_three_fits_measure_what_they_say(self):
+        fits = common.pressure_fits(self.summary, lambda run, b: b["L_dep"])
+        self.assertAlmostEqual(fits["excess_through_origin"][0], self.c, places=9)
+        self.assertAlmostEqual(fits["excess_through_origin"][1], self.c, places=9)  # no spread
+        # Through the origin on P, the clean loss inflates the slope.
+        x = np.array([0.05, 0.4, 1.2, 0.1, 0.9, 2.0])
+        p = np.array([0.08] * 3 + [0.06] * 3) + self.c * x
+        self.assertAlmostEqual(fits["through_origin"][0], float(x @ p / (x @ x)), places=9)
+        self.assertGreater(fits["through_origin"][0], self.c + 0.02)
+        # A line with an intercept over both runs: slope c within the P_0 spread, intercept
+        # between the two clean losses.
+        self.assertAlmostEqual(fits["slope"][0], float(np.polyfit(x, p, 1)[0]), places=9)
+        self.assertTrue(0.06 <= fits["intercept"][0] <= 0.08)
+        self.assertAlmostEqual(fits["pearson"][0], float(np.corrcoef(x, p)[0, 1]), places=9)
+
+    def test_dropvol_units(self):
+        D, L = 3.5, 4.25
+        burst = dict(V_dep=2.0 * D ** 3)
+        run = self.runs[0]
+        self.assertAlmostEqual(dropvol.per_cube_of_diameter(run, burst), 2.0, places=12)
+        self.assertAlmostEqual(dropvol.per_pore_volume(run, burst), 2.0 * D ** 3 / (math.pi * D * D * L / 4),
+                               places=12)
+        # V_dep = L_dep pi D^2 / 4, so V_dep / D^3 = L_dep pi / (4 D) and against P - P_0 the
+        # slope is c 4 D / pi.
+        fits = common.pressure_fits(self.summary, dropvol.per_cube_of_diameter)
+        self.assertAlmostEqual(fits["excess_through_origin"][0], 4 * self.c * D / math.pi, places=9)
+
+    def test_figure_results_name_all_three_fits(self):
+        from figures import porelength
+        out = os.path.join(self.tmp.name, "out")
+        os.makedirs(out)
+        r = porelength.analyze(self.summary, out)
+        self.assertAlmostEqual(r["excess_coefficient"][0], self.c, places=9)
+        for words in ("through 0", "P - P_0", "intercept"):
+            self.assertIn(words, r["ours"])
+        self.assertTrue(os.path.getsize(r["plot"]) > 5000)
+
+
+if __name__ == "__main__":
+    unittest.main()
