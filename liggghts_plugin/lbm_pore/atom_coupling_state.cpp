@@ -24,6 +24,11 @@ void visit_fields(AtomCouplingState& s, Visit visit) {
   visit(known);
   s.wall.known = known > 0.0;
   for (double& v : s.wall.searched_from) visit(v);
+  // Fields added later go last: a shorter buffer of an earlier layout is a prefix.
+  for (double& v : s.last_step_velocity) visit(v);
+  double has_last = s.has_last_step_velocity ? 1.0 : 0.0;
+  visit(has_last);
+  s.has_last_step_velocity = has_last > 0.0;
 }
 }  // namespace
 
@@ -33,9 +38,13 @@ void AtomCouplingState::pack(double* buf) const {
   visit_fields(copy, [&](double& v) { buf[m++] = v; });
 }
 
-void AtomCouplingState::unpack(const double* buf) {
+void AtomCouplingState::unpack(const double* buf, int count) {
+  *this = AtomCouplingState{};
   int m = 0;
-  visit_fields(*this, [&](double& v) { v = buf[m++]; });
+  visit_fields(*this, [&](double& v) {
+    if (m < count) v = buf[m];
+    ++m;
+  });
 }
 
 void AtomCouplingState::pack_summed(double* buf) const {

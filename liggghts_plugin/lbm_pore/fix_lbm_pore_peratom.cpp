@@ -100,10 +100,11 @@ void FixLbmPore::unpack_restart(int nlocal, int nth) {
   double** extra = atom->extra;
   int m = 0;
   for (int n = 0; n < nth; ++n) m += static_cast<int>(extra[nlocal][m]);
-  if (static_cast<int>(extra[nlocal][m]) != AtomCouplingState::kDoubles + 1)
+  const int size = static_cast<int>(extra[nlocal][m]);
+  if (size != AtomCouplingState::kDoubles + 1 && size != AtomCouplingState::kDoubles1 + 1)
     error->one(FLERR, "fix lbm/pore: the restart file's per-atom data has another layout (written by "
                       "another version of lbm-pore); restart from a file written by this one");
-  state_[nlocal].unpack(&extra[nlocal][m + 1]);
+  state_[nlocal].unpack(&extra[nlocal][m + 1], size - 1);
 }
 
 int FixLbmPore::size_restart(int) { return AtomCouplingState::kDoubles + 1; }

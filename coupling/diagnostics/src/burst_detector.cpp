@@ -136,6 +136,35 @@ BurstRecord take_record(const double* in) {
 
 }  // namespace
 
+namespace {
+// A state of version 1 (samples of 7 values, records of 10: before the wall's hold was
+// recorded) as version 2, the hold 0. Throws on a state that is not one.
+std::vector<double> upgraded_from_version_1(const std::vector<double>& old) {
+  constexpr std::size_t kOldSample = 7, kOldColumns = 10, kOldHead = 5 + 3 * kOldSample;
+  if (old.size() < kOldHead) throw std::invalid_argument("burst detector state: version 1 but too short");
+  const auto candidates = static_cast<std::size_t>(old[3]);
+  const auto bursts = static_cast<std::size_t>(old[4]);
+  if (old.size() != kOldHead + candidates * (kOldSample + 1) + bursts * kOldColumns)
+    throw std::invalid_argument("burst detector state: wrong size");
+  std::vector<double> out{kStateVersion, old[1], old[2], old[3], old[4]};
+  const double* in = old.data() + 5;
+  const auto sample = [&](const double* s) {
+    out.insert(out.end(), s, s + kOldSample);
+    out.insert(out.end(), kSampleSize - kOldSample, 0.0);
+  };
+  for (int k = 0; k < 3; ++k, in += kOldSample) sample(in);
+  for (std::size_t i = 0; i < candidates; ++i, in += kOldSample + 1) {
+    sample(in);
+    out.push_back(in[kOldSample]);
+  }
+  for (std::size_t i = 0; i < bursts; ++i, in += kOldColumns) {
+    out.insert(out.end(), in, in + kOldColumns);
+    out.insert(out.end(), BurstRecord::kColumns - kOldColumns, 0.0);
+  }
+  return out;
+}
+}  // namespace
+
 // Layout: version, largest, falling, #candidates, #bursts, peak, minimum, floor, candidates
 // (sample + is_peak each), bursts (BurstRecord::row() each). Integers are exact in a double
 // up to 2^53.
@@ -157,6 +186,7 @@ std::vector<double> BurstDetector::state() const {
 }
 
 void BurstDetector::restore(const std::vector<double>& state) {
+  if (!state.empty() && state[0] == 1.0) return restore(upgraded_from_version_1(state));
   const std::size_t head = 5 + 3 * kSampleSize;
   if (state.size() < head || state[0] != kStateVersion)
     throw std::invalid_argument("burst detector state: not written by this version");

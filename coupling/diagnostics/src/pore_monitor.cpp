@@ -180,14 +180,18 @@ std::vector<double> PoreMonitor::state() const {
 }
 
 void PoreMonitor::restore(const std::vector<double>& state) {
-  if (state.size() < std::size_t(kCount) + 2 || state[0] != double(kCount))
+  // Restart files written before the wall's hold was recorded hold the first
+  // kWallForceX values; the hold then starts at 0 and is recorded from the next fluid step.
+  const std::size_t count = state.empty() ? 0 : std::size_t(state[0]);
+  if ((count != std::size_t(kCount) && count != std::size_t(kWallForceX)) || state.size() < count + 2)
     throw std::invalid_argument(
         "pore monitor: the restart file holds another set of diagnostics (written by another "
         "version of lbm-pore, " +
         std::to_string(kCount) + " values expected); restart from a file written by this one");
-  std::copy(state.begin() + 1, state.begin() + 1 + kCount, values_.begin());
-  last_burst_sample_ = static_cast<long long>(state[kCount + 1]);
-  detector_.restore(std::vector<double>(state.begin() + kCount + 2, state.end()));
+  std::fill(values_.begin(), values_.end(), 0.0);
+  std::copy(state.begin() + 1, state.begin() + 1 + count, values_.begin());
+  last_burst_sample_ = static_cast<long long>(state[count + 1]);
+  detector_.restore(std::vector<double>(state.begin() + count + 2, state.end()));
   keep_erosive_bursts();
 }
 
