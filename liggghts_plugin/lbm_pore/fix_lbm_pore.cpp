@@ -9,6 +9,7 @@
 
 #include "atom.h"
 #include "comm.h"
+#include "coupling/boundary/wall_velocity.h"
 #include "coupling/diagnostics/particle_probes.h"
 #include "coupling/lattice_frame.h"
 #include "coupling/sphere_coupling.h"
@@ -344,17 +345,11 @@ void FixLbmPore::end_of_step() {
 }
 
 // Lattice-unit copies of the group's owned atoms and ghosts. The fluid sees each sphere move
-// with its mean velocity over the last two fluid steps, (x(t) - x(t-2)) / (2 dt_lbm), the
-// velocity of the mapping's motion (the instantaneous velocity of a particle in a stiff
-// contact oscillates within the substeps, and sampling it once per fluid step feeds that
-// noise into the fluid) without its component that alternates every fluid step: a fluid
-// node in a gap between two surfaces narrower than a cell along some lattice axis (every
-// link with a component along it ends on a surface) holds a momentum along that axis that
-// each step reverses and nothing damps; its alternating push on the two particles came
-// back through their one-step velocities in the moving-wall term (2 rho0 u_w a step) and
-// pumped it until the fluid guard stopped the run (speed 0.5, density 1.6 at a node 0.01
-// cells from a deposited particle). The two-step mean carries no such component. `advance`
-// is false at setup, where no step has passed.
+// with the velocity coupling::wall_velocity_of_steps makes of its mean velocities over the
+// last fluid steps (x - x_previous) / dt_lbm, the velocities of the mapping's motion (the
+// instantaneous velocity of a particle in a stiff contact oscillates within the substeps, and
+// sampling it once per fluid step feeds that noise into the fluid); that header says why two
+// steps. `advance` is false at setup, where no step has passed.
 void FixLbmPore::gather_particles(bool advance) {
   double** x = atom->x;
   double** v = atom->v;
@@ -364,11 +359,10 @@ void FixLbmPore::gather_particles(bool advance) {
     if (advance && s.has_step_position) {
       double d[3] = {x[i][0] - s.step_position[0], x[i][1] - s.step_position[1], x[i][2] - s.step_position[2]};
       domain->minimum_image(d);  // an atom wrapped through a periodic face
-      for (int a = 0; a < 3; ++a) {
-        const double step_velocity = d[a] / dt_lbm;
-        s.fluid_velocity[a] = s.has_last_step_velocity ? 0.5 * (step_velocity + s.last_step_velocity[a]) : step_velocity;
-        s.last_step_velocity[a] = step_velocity;
-      }
+      const coupling::Vec3 step_velocity{d[0] / dt_lbm, d[1] / dt_lbm, d[2] / dt_lbm};
+      s.fluid_velocity = coupling::wall_velocity_of_steps(
+          step_velocity, s.has_last_step_velocity ? &s.last_step_velocity : nullptr);
+      s.last_step_velocity = step_velocity;
       s.has_last_step_velocity = true;
     } else {
       for (int a = 0; a < 3; ++a) s.fluid_velocity[a] = v[i][a];
