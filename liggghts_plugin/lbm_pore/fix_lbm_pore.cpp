@@ -204,10 +204,7 @@ void FixLbmPore::build_lattice() {
   lbm_pore::check_lattice_memory(options_, decomposition.owned, geometry_->dims(), lbm::Communicator(world));
   solver_ = std::make_unique<lbm::FluidSolver>(*geometry_, p, drive, decomposition);
 
-  coupling::SphereCouplingOptions co;
-  co.wall_scheme = lbm::moving_wall::parse(options_.boundary);
-  co.conserve_link_mass = options_.mass_correction;
-  coupling_ = std::make_unique<coupling::SphereCoupling>(*solver_, co);
+  coupling_ = std::make_unique<coupling::SphereCoupling>(*solver_, lbm_pore::coupling_options(options_));
   lubrication_ = std::make_unique<coupling::LubricationKernel>(lbm_pore::lubrication_kernel(options_, *units_));
   monitor_setup_.criteria.speed_threshold = lbm_pore::deposit_speed_threshold(options_, *units_, drive);
   monitor_setup_.bursts = lbm_pore::burst_criteria(options_, *units_);

@@ -162,6 +162,11 @@ PoreOptions parse_pore_options(const std::vector<std::string>& args) {
         fail("keyword 'boundary' = '" + o.boundary + "': must be bounce_back, bouzidi or mls");
     } else if (key == "mass_correction") {
       o.mass_correction = words.yes_no(key);
+    } else if (key == "reference_pressure") {
+      const std::string v = words.text(key);
+      if (v != "remove" && v != "keep")
+        fail("keyword 'reference_pressure' = '" + v + "': must be 'remove' or 'keep'");
+      o.keep_reference_pressure = v == "keep";
     } else if (key == "rotation") {
       o.rotation = words.yes_no(key);
     } else if (key == "lubrication") {
@@ -200,7 +205,7 @@ PoreOptions parse_pore_options(const std::vector<std::string>& args) {
 
 const char* pore_options_usage() {
   return "dx, rho, nu, n_dem, magic, scene (pore|voxels), origin, lateral, velocity, "
-         "pressure_loss, boundary, mass_correction, rotation, lubrication, lubrication_cutoff, deposit_speed, burst_drop, "
+         "pressure_loss, boundary, mass_correction, reference_pressure, rotation, lubrication, lubrication_cutoff, deposit_speed, burst_drop, "
          "burst_window, burst_deposits, burst_file, vtk, "
          "checkpoint, checkpoint_keep";
 }

@@ -31,6 +31,10 @@ struct PoreOptions {
   // Put back the mass the interpolated links (bouzidi, mls) create at each node every step
   // (lbm/moving_wall/link_mass.h); 'no' only to reproduce runs made before it existed.
   bool mass_correction = true;
+  // The momentum exchange keeps each link's reference-pressure share (the paper's Eq. 2 read
+  // literally: a particle touching a wall is pressed into it by p0 on its unlinked surface)
+  // or removes it (the default; coupling/force/momentum_exchange.h).
+  bool keep_reference_pressure = false;
   bool lubrication = true;
   // The paper neglects rotation (translation only): with 'rotation no' the fix adds no
   // torque and the fluid sees the particles without spin (integrate them with fix nve).

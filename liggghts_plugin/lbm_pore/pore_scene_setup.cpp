@@ -1,5 +1,7 @@
 #include "pore_scene_setup.h"
 
+#include "lbm/moving_wall/moving_wall_scheme.h"
+
 #include <unistd.h>
 
 #include <algorithm>
@@ -262,5 +264,14 @@ std::string setup_summary(const PoreOptions& o, const coupling::UnitConversion& 
 }
 
 double coupling_bytes_per_node(int threads) { return 8.0 + 36.0 * std::max(threads, 1) + 8.0 + 32.0; }
+
+coupling::SphereCouplingOptions coupling_options(const PoreOptions& o) {
+  coupling::SphereCouplingOptions co;
+  co.wall_scheme = lbm::moving_wall::parse(o.boundary);
+  co.conserve_link_mass = o.mass_correction;
+  co.reference_pressure =
+      o.keep_reference_pressure ? coupling::ReferencePressure::kKept : coupling::ReferencePressure::kRemoved;
+  return co;
+}
 
 }  // namespace lbm_pore

@@ -8,6 +8,7 @@
 
 #include "coupling/diagnostics/pore_monitor.h"
 #include "coupling/lubrication/lubrication_kernel.h"
+#include "coupling/sphere_coupling.h"
 #include "coupling/unit_conversion.h"
 #include "lbm/block_layout.h"
 #include "lbm/communicator.h"
@@ -67,6 +68,9 @@ lbm::FluidParameters fluid_parameters(const PoreOptions& options, const coupling
 
 // The lubrication kernel in the script's units (lattice-unit law, cutoff in cells).
 coupling::LubricationKernel lubrication_kernel(const PoreOptions& options, const coupling::UnitConversion& units);
+
+// The coupling's options from the keywords: boundary, mass_correction, reference_pressure.
+coupling::SphereCouplingOptions coupling_options(const PoreOptions& options);
 
 // The neighbour list must hold every pair within the lubrication cutoff (contact distance
 // plus skin): throws lbm::InputError saying which skin is needed.

@@ -30,6 +30,8 @@ TEST(PoreOptions, PaperSceneWithDefaults) {
   EXPECT_EQ(o.boundary, "mls");
   EXPECT_TRUE(o.lubrication);
   EXPECT_TRUE(o.mass_correction);
+  EXPECT_FALSE(o.keep_reference_pressure);
+  EXPECT_EQ(o.checkpoint_keep, 0);
   EXPECT_EQ(o.drive, lbm_pore::PoreOptions::Drive::kVelocity);
 }
 
@@ -37,7 +39,7 @@ TEST(PoreOptions, AllKeywords) {
   const auto o = lbm_pore::parse_pore_options(
       split("dx 1 rho 2 nu 0.1 n_dem 50 magic 0.25 scene voxels g.raw origin 0 1 2 lateral wall "
             "pressure_loss 0.02 boundary bouzidi mass_correction no lubrication no lubrication_cutoff 0.5 "
-            "deposit_speed 0.001 vtk 10 out checkpoint ck"));
+            "deposit_speed 0.001 vtk 10 out checkpoint ck reference_pressure keep checkpoint_keep 2"));
   EXPECT_EQ(o.voxel_file, "g.raw");
   EXPECT_FALSE(o.lateral_periodic);
   EXPECT_EQ(o.drive, lbm_pore::PoreOptions::Drive::kPressureLoss);
@@ -47,6 +49,8 @@ TEST(PoreOptions, AllKeywords) {
   EXPECT_FALSE(o.lubrication);
   EXPECT_FALSE(o.mass_correction);
   EXPECT_EQ(o.checkpoint_prefix, "ck");
+  EXPECT_TRUE(o.keep_reference_pressure);
+  EXPECT_EQ(o.checkpoint_keep, 2);
 }
 
 TEST(PoreOptions, BadValuesNameTheKeywordAndRange) {
@@ -58,6 +62,10 @@ TEST(PoreOptions, BadValuesNameTheKeywordAndRange) {
   EXPECT_NE(error_of("dx 1 boundary curved" + kScene).find("bounce_back, bouzidi or mls"),
             std::string::npos);
   EXPECT_NE(error_of("dx 1 colour red" + kScene).find("unknown keyword 'colour'"), std::string::npos);
+  EXPECT_NE(error_of("dx 1 reference_pressure literal" + kScene).find("'reference_pressure' = 'literal': must be 'remove' or 'keep'"),
+            std::string::npos);
+  EXPECT_NE(error_of("dx 1 checkpoint_keep -1" + kScene).find("'checkpoint_keep' = '-1': must be an integer in [0,"),
+            std::string::npos);
   EXPECT_NE(error_of(kScene).find("'dx'"), std::string::npos);
   EXPECT_NE(error_of("dx 1 velocity 0.1").find("'scene' is required"), std::string::npos);
   EXPECT_NE(error_of("dx 1 scene pore inlet 3 free 2 length 4 outlet 3 width 5 diameter 6 velocity 1")

@@ -29,9 +29,11 @@ constexpr DoubleVelocities kC = double_velocities();
 // over its links in order, whatever the split. A particle's links are consecutive, so its
 // sums are kept in registers over the run of them (the same additions in the same order as
 // into the arrays).
+// rho_gauge: the reference density whose share 2 w_q rho_gauge each link loses (rho0, or 0
+// with the reference pressure kept).
 template <bool kGalilean>
 void sum_links(const SphereLinks& sl, const std::vector<lbm::LinkPopulations>& populations,
-               std::size_t first, std::size_t last, double rho0, HydrodynamicLoads& loads) {
+               std::size_t first, std::size_t last, double rho0, double rho_gauge, HydrodynamicLoads& loads) {
   std::size_t l = first;
   while (l < last) {
     const int p = sl.particle[l];
@@ -47,7 +49,7 @@ void sum_links(const SphereLinks& sl, const std::vector<lbm::LinkPopulations>& p
       // it sums to zero exactly (as many links along +c_q as along -c_q), but where a sphere
       // touches a wall or another sphere and its covered nodes lose their fluid neighbours
       // it would act as the pressure p0 = rho0/3 on one side only ("void as vacuum").
-      const double sum = out + back - 2.0 * L::w[q] * rho0;
+      const double sum = out + back - 2.0 * L::w[q] * rho_gauge;
       Vec3 F{sum * kC.c[q][0], sum * kC.c[q][1], sum * kC.c[q][2]};
       if (kGalilean) {
         const double diff = out - back;
@@ -74,7 +76,7 @@ std::size_t particle_boundary(const SphereLinks& sl, std::size_t l) {
 
 template <bool kGalilean>
 void sum_all_links(const SphereLinks& sl, const std::vector<lbm::LinkPopulations>& populations,
-                   double rho0, HydrodynamicLoads& loads) {
+                   double rho0, double rho_gauge, HydrodynamicLoads& loads) {
   const std::size_t n = sl.links.size();
   int threads = 1;
 #ifdef _OPENMP
@@ -83,7 +85,7 @@ void sum_all_links(const SphereLinks& sl, const std::vector<lbm::LinkPopulations
   if (std::is_sorted(sl.particle.begin(), sl.particle.end())) threads = lbm::link_threads(n);
 #endif
   if (threads <= 1) {
-    sum_links<kGalilean>(sl, populations, 0, n, rho0, loads);
+    sum_links<kGalilean>(sl, populations, 0, n, rho0, rho_gauge, loads);
     return;
   }
   // Blocks of whole particles, one per thread: no two threads add to one particle.
@@ -92,18 +94,20 @@ void sum_all_links(const SphereLinks& sl, const std::vector<lbm::LinkPopulations
     const lbm::TeamMember member = lbm::team_member();
     const std::size_t t = std::size_t(member.index), nt = std::size_t(member.size);
     sum_links<kGalilean>(sl, populations, particle_boundary(sl, n * t / nt),
-                         particle_boundary(sl, n * (t + 1) / nt), rho0, loads);
+                         particle_boundary(sl, n * (t + 1) / nt), rho0, rho_gauge, loads);
   }
 }
 }  // namespace
 
 void add_momentum_exchange(const SphereLinks& links,
                            const std::vector<lbm::LinkPopulations>& populations,
-                           MomentumExchange method, double rho0, HydrodynamicLoads& loads) {
+                           MomentumExchange method, double rho0, HydrodynamicLoads& loads,
+                           ReferencePressure reference) {
+  const double rho_gauge = reference == ReferencePressure::kRemoved ? rho0 : 0.0;
   if (method == MomentumExchange::kGalileanInvariant)
-    sum_all_links<true>(links, populations, rho0, loads);
+    sum_all_links<true>(links, populations, rho0, rho_gauge, loads);
   else
-    sum_all_links<false>(links, populations, rho0, loads);
+    sum_all_links<false>(links, populations, rho0, rho_gauge, loads);
 }
 
 }  // namespace coupling

@@ -115,7 +115,8 @@ void SphereCoupling::apply_moving_walls_and_force(const ParticleView& view) {
   }
   StageTimer t(times_.force);
   loads_.reset(view.num_total);
-  add_momentum_exchange(links_, link_populations_, options_.momentum_exchange, rho0, loads_);
+  add_momentum_exchange(links_, link_populations_, options_.momentum_exchange, rho0, loads_,
+                        options_.reference_pressure);
 }
 
 void SphereCoupling::step(const ParticleView& view) {

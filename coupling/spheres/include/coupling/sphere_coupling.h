@@ -22,6 +22,7 @@ struct SphereCouplingOptions {
   lbm::MovingWallScheme wall_scheme = lbm::MovingWallScheme::kMeiLuoShyy;
   RefillScheme refill = RefillScheme::kEquilibriumAveragedDensity;
   MomentumExchange momentum_exchange = MomentumExchange::kGalileanInvariant;
+  ReferencePressure reference_pressure = ReferencePressure::kRemoved;
   // Put back, at each fluid node, the mass its interpolated links created or destroyed
   // (lbm/moving_wall/link_mass.h); without it the fluid mass grows in dense fixed arrays.
   bool conserve_link_mass = true;

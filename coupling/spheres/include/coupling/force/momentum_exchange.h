@@ -18,6 +18,13 @@ enum class MomentumExchange {
   kGalileanInvariant,
 };
 
+// The reference pressure's share of each link, 2 w_q rho0: removed (the default) or kept (the
+// paper's Eq. 2 read literally). Over a closed link set it sums to zero either way; where a
+// sphere touches a wall or another sphere its covered nodes lose fluid neighbours, and kept,
+// it pushes the sphere with p0 = rho0 / 3 on the part of its surface that has no links: into
+// the wall ("void as vacuum"), two touching spheres together.
+enum class ReferencePressure { kRemoved, kKept };
+
 // Per-particle force and torque of one fluid step (lattice units, force = momentum per step).
 struct HydrodynamicLoads {
   std::vector<Vec3> force;   // indexed like the view of the step (owned and ghosts)
@@ -38,7 +45,7 @@ struct HydrodynamicLoads {
 
 // Both forms use the gauge populations, 2 w_q rho0 subtracted per link (exact no-op for a
 // sphere surrounded by fluid; removes the spurious p0 push where its surface has no fluid
-// links, i.e. in contact with a wall or another sphere).
+// links, i.e. in contact with a wall or another sphere), unless `reference` keeps it.
 // Sums over the links (all from owned fluid nodes, so ghost layers never double count),
 // from the populations the moving-wall stage recorded per link (lbm::apply_links' output:
 // no lattice access). Torque arm: the cut point on the surface. Links in particle order (as
@@ -46,6 +53,7 @@ struct HydrodynamicLoads {
 // summed in link order, so the loads are the same for any number of threads.
 void add_momentum_exchange(const SphereLinks& links,
                            const std::vector<lbm::LinkPopulations>& populations,
-                           MomentumExchange method, double rho0, HydrodynamicLoads& loads);
+                           MomentumExchange method, double rho0, HydrodynamicLoads& loads,
+                           ReferencePressure reference = ReferencePressure::kRemoved);
 
 }  // namespace coupling
