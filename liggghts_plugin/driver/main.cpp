@@ -1,34 +1,40 @@
 // liggghts-lbm: a drop-in for Debian's `liggghts` executable that also knows this project's
 // styles. Same command line (-in, -var, -log, -echo, -screen, -partition, ...), parsed by
 // LAMMPS_NS::LAMMPS itself; serial or under mpirun. Differences to LIGGGHTS's own main():
-// register_lbm_pore_styles() before the input runs, stop signals that fix lbm/pore takes at
-// a fluid step (plugin_common/stop_signals.h), and an error that stays the last line of the
-// output (line-buffered stdout, no Open MPI abort notice, no LIGGGHTS-PUBLIC joke line).
+// register_lbm_pore_styles() before the input runs, the project's version under LIGGGHTS's in
+// the header of the screen and log, stop signals that fix lbm/pore takes at a fluid step
+// (plugin_common/stop_signals.h), and an error that stays the last line of the output
+// (line-buffered stdout, no Open MPI abort notice, no LIGGGHTS-PUBLIC joke line: its restart
+// files stay LIGGGHTS's own all the same, plugin_common/restart_version.h).
 #include <mpi.h>
 
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 
 #include <unistd.h>
 
 #include "input.h"
 #include "lammps.h"
+#include "plugin_common/restart_version.h"
+#include "plugin_common/stop_run.h"
 #include "plugin_common/stop_signals.h"
 #include "registry/style_registry.h"
 #include "universe.h"
 
 namespace {
 
-// LIGGGHTS-PUBLIC's Error::all/one follow the ERROR line, one time in five, with a joke or a
-// "tip of the day" (error_special.h) that is read from a destroyed string and prints as
-// garbage. It does so only when the version string contains "PUBLIC": the driver's copy
-// says "public", so the project's ERROR stays the last line. Restart files carry this
-// string; reading one written by Debian's `liggghts` warns that the versions differ.
-void hide_public_edition(LAMMPS_NS::Universe* universe) {
-  // Edited in place: the Universe owns (and deletes) the buffer.
-  char* at = std::strstr(universe->version, "PUBLIC");
-  if (at) std::memcpy(at, "public", 6);
+// The line under LIGGGHTS's "LIGGGHTS (Version ...)", where LIGGGHTS writes that: the screen
+// and log of the run, or of the universe and of each partition with -partition.
+void print_project_version(LAMMPS_NS::LAMMPS* lammps) {
+  const char* line = "liggghts-lbm " LBM_PORE_VERSION
+                     " (lbm-pore: fix lbm/pore, fix wall/voxel, pair_style lbm/dashdot, "
+                     "compute lbm/bonds)\n";
+  LAMMPS_NS::Universe* universe = lammps->universe;
+  if (universe->me == 0 && universe->nworlds > 1)
+    lbm_pore::print_to_screen_and_log(universe->uscreen, universe->ulogfile, line);
+  int rank = 0;
+  MPI_Comm_rank(lammps->world, &rank);
+  if (rank == 0) lbm_pore::print_to_screen_and_log(lammps->screen, lammps->logfile, line);
 }
 
 // On ranks other than 0, LIGGGHTS 3.8's screen is stdout too, written only for errors
@@ -75,9 +81,10 @@ int main(int argc, char** argv) {
   // LIGGGHTS's "ERROR on proc N" reach a redirected screen (a batch job's output file).
   std::setvbuf(stdout, nullptr, _IOLBF, BUFSIZ);
   auto* lammps = new LAMMPS_NS::LAMMPS(argc, argv, MPI_COMM_WORLD);
-  hide_public_edition(lammps->universe);
+  print_project_version(lammps);
   drop_stray_output_of_other_ranks(lammps);
   lbm_pore::register_lbm_pore_styles(lammps);
+  lbm_pore::keep_restart_files_stock(lammps);
   lammps->input->file();
   delete lammps;
   MPI_Finalize();

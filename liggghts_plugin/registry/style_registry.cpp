@@ -14,6 +14,7 @@
 #include "dashdot/compute_lbm_bonds.h"
 #include "dashdot/pair_lbm_dashdot.h"
 #include "lbm_pore/fix_lbm_pore.h"
+#include "plugin_common/restart_version.h"
 #include "wall_voxel/fix_wall_voxel.h"
 
 namespace lbm_pore {
@@ -45,6 +46,8 @@ const PairStyle kPairStyles[] = {
 const FixStyle kFixStyles[] = {
     {"wall/voxel", &create_fix<LAMMPS_NS::FixWallVoxel>},
     {"lbm/pore", &create_fix<LAMMPS_NS::FixLbmPore>},
+    // Not for input scripts: liggghts-lbm adds it to every run (plugin_common/restart_version.h).
+    {lbm_pore::kRestartVersionFixStyle, &lbm_pore::create_restart_version_fix},
 };
 const ComputeStyle kComputeStyles[] = {
     {"lbm/bonds", &create_compute<LAMMPS_NS::ComputeLbmBonds>},

@@ -3,12 +3,14 @@
 output with the paper's analytic values. Prints each measured figure and its bound
 (tests/harness/liggghts_run.py); exits 1 on failure.
 
-usage: dem_check.py --driver PATH --scripts DIR [--mpirun mpirun] CASE
+usage: dem_check.py --driver PATH --scripts DIR [--mpirun mpirun] [--liggghts PATH] CASE
 cases: bond_hold, bond_break, restitution, adhesion_hold, adhesion_break, tilt_stick,
-       tilt_slide, parallel_equal
+       tilt_slide, parallel_equal, restart_version (needs --liggghts, Debian's liggghts)
 """
 import math
 import os
+import re
+import struct
 from collections import namedtuple
 
 from liggghts_run import at_step, check, main, thermo_rows
@@ -136,6 +138,50 @@ def parallel_equal(h):
           f"{worst:.3g} over {len(a)} vs {len(b)} rows", "< 1e-9, same number of rows")
 
 
+VERSION_WARNING = "Restart file version does not match"
+
+
+def restart_version_record(path):
+    """The first record of a LIGGGHTS 3.8 restart file: the int 0 (VERSION), the length of the
+    version string and the string with its NUL."""
+    with open(path, "rb") as f:
+        flag, length = struct.unpack("ii", f.read(8))
+        return flag, f.read(length).rstrip(b"\0").decode(errors="replace")
+
+
+def restart_version(h):
+    """Restart files of liggghts-lbm carry LIGGGHTS's own version string, so liggghts-lbm and
+    Debian's liggghts read each other's files without the version warning; liggghts-lbm prints
+    the project's version under LIGGGHTS's in its header."""
+    written = h.run("in.restart_write", {})
+    stock = h.run("in.restart_write", {}, program=h.liggghts)
+    lines = written.output.splitlines()
+    cmake = open(os.path.join(h.scripts, "..", "..", "CMakeLists.txt")).read()
+    version = re.search(r"project\(lbm_pore VERSION ([0-9.]+)", cmake).group(1)
+    header = lines[lines.index(next(l for l in lines if l.startswith("LIGGGHTS ("))) + 1]
+    check("restart_version_project_version_in_header",
+          header.startswith(f"liggghts-lbm {version} "), header,
+          f"'liggghts-lbm {version} ...' under LIGGGHTS's version line")
+    with open(os.path.join(written.work, "log.liggghts")) as log:
+        check("restart_version_project_version_in_log", f"liggghts-lbm {version} " in log.read(),
+              "log.liggghts", f"holds 'liggghts-lbm {version}'")
+    expected = restart_version_record(os.path.join(stock.work, "restart.written"))
+    # write_restart, `restart N a b` and `restart N file.*` during the run.
+    for name in ("restart.written", "restart.a", "restart.80"):
+        path = os.path.join(written.work, name)
+        check(f"restart_version_{name}_header", restart_version_record(path) == expected,
+              restart_version_record(path)[1], f"LIGGGHTS's own: {expected[1]}")
+    for reader, program in (("liggghts-lbm", None), ("liggghts", h.liggghts)):
+        for writer, run in (("liggghts-lbm", written), ("liggghts", stock)):
+            for name in ("restart.written", "restart.b"):
+                out = h.run("in.restart_read", {"file": os.path.join(run.work, name)},
+                            program=program).output
+                check(f"restart_version_{reader}_reads_{writer}_{name}",
+                      VERSION_WARNING not in out and "Loop time" in out,
+                      "warned" if VERSION_WARNING in out else "no warning",
+                      f"no '{VERSION_WARNING}', the run continues")
+
+
 if __name__ == "__main__":
     main({"bond_hold": lambda h: hold_or_break(h, BOND, 0.95),
           "bond_break": lambda h: hold_or_break(h, BOND, 1.2),
@@ -144,4 +190,5 @@ if __name__ == "__main__":
           "adhesion_break": lambda h: hold_or_break(h, ADHESION, 1.2),
           "tilt_stick": lambda h: tilt(h, False),
           "tilt_slide": lambda h: tilt(h, True),
-          "parallel_equal": parallel_equal}, __doc__)
+          "parallel_equal": parallel_equal,
+          "restart_version": restart_version}, __doc__)

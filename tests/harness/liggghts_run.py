@@ -36,32 +36,38 @@ class Harness:
     temporary folder (removed at the end) unless the caller names one (a restart reads what
     an earlier run wrote)."""
 
-    def __init__(self, driver, scripts, mpirun, work):
+    def __init__(self, driver, scripts, mpirun, work, liggghts=None):
         self.driver, self.scripts, self.mpirun, self.work = driver, scripts, mpirun, work
+        self.liggghts = liggghts  # Debian's liggghts, for the checks against it (or None)
         self._runs = 0
 
-    def run(self, script, variables, ranks=1, cwd=None, expect_error=False, timeout=240):
+    def run(self, script, variables, ranks=1, cwd=None, expect_error=False, timeout=240,
+            program=None):
         """Runs `script` (a file of the scripts folder) with `-var dir <scripts>` and one
-        `-var name value` per variable, on `ranks` MPI ranks. Raises
-        subprocess.TimeoutExpired after `timeout` s. Unless `expect_error`, an exit code other
-        than 0 or an ERROR in the output ends the check with exit status 1."""
+        `-var name value` per variable, on `ranks` MPI ranks, with liggghts-lbm or `program`.
+        Raises subprocess.TimeoutExpired after `timeout` s. Unless `expect_error`, an exit code
+        other than 0 or an ERROR in the output ends the check with exit status 1."""
         if cwd is None:
             self._runs += 1
             cwd = os.path.join(self.work, f"run{self._runs}")
             os.makedirs(cwd)
-        cmd = [self.driver, "-in", os.path.join(self.scripts, script),
+        cmd = [program or self.driver, "-in", os.path.join(self.scripts, script),
                "-log", os.path.join(cwd, "log.liggghts"), "-var", "dir", self.scripts]
         for name, value in variables.items():
             cmd += ["-var", name, str(value)]
         if ranks > 1:
             cmd = [self.mpirun, "--allow-run-as-root", "--oversubscribe", "-np", str(ranks)] + cmd
-        print("run:", " ".join(cmd[cmd.index("-in") + 1:]), flush=True)
+        shown = cmd[cmd.index("-in") + 1:]
+        if program:
+            shown = [f"({os.path.basename(program)})"] + shown
+        print("run:", " ".join(shown), flush=True)
         result = subprocess.run(cmd, cwd=cwd, capture_output=True, text=True, errors="replace",
                                 timeout=timeout)
         run = Run(result.returncode, result.stdout + result.stderr, cwd)
         if not expect_error and (run.code != 0 or "ERROR" in run.output):
             print(run.output[-3000:])
-            sys.exit(f"ERROR liggghts-lbm failed (exit {run.code}): {script} {variables}")
+            sys.exit(f"ERROR {os.path.basename(cmd[0])} failed (exit {run.code}): {script} "
+                     f"{variables}")
         return run
 
 
@@ -122,10 +128,11 @@ def main(cases, description):
     parser.add_argument("--driver", required=True, help="the liggghts-lbm executable")
     parser.add_argument("--scripts", required=True, help="the folder of the input scripts")
     parser.add_argument("--mpirun", default="mpirun", help="for the runs on 2 ranks")
+    parser.add_argument("--liggghts", help="Debian's liggghts, for the checks against it")
     parser.add_argument("case", choices=sorted(cases))
     args = parser.parse_args()
     with tempfile.TemporaryDirectory(prefix=f"{args.case}_") as work:
         cases[args.case](Harness(os.path.abspath(args.driver), os.path.abspath(args.scripts),
-                                 args.mpirun, work))
+                                 args.mpirun, work, args.liggghts))
     if _failures:
         sys.exit(f"{len(_failures)} check(s) failed: {', '.join(_failures)}")

@@ -12,7 +12,7 @@
 #include "lbm/collide_stream.h"
 #include "lbm/d3q19.h"
 #include "lbm/input_error.h"
-#include "lbm/link_boundary.h"
+#include "lbm/moving_wall/link_boundary.h"
 #include "lbm/macroscopic.h"
 #include "lbm/moving_wall/bounce_back.h"
 #include "lbm/moving_wall/bouzidi.h"

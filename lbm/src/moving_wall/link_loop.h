@@ -4,7 +4,7 @@
 // file instantiates them, so the per-link formula is inlined and no link branches on the
 // scheme.
 
-#include "lbm/link_boundary.h"
+#include "lbm/moving_wall/link_boundary.h"
 #include "lbm/moving_wall/link_mass.h"
 #include "lbm/moving_wall/link_sweep.h"
 #include "lbm/moving_wall/moving_wall_scheme.h"

@@ -4,7 +4,7 @@
 #include <cstdlib>
 
 #include "lbm/fluid_solver.h"
-#include "lbm/link_boundary.h"
+#include "lbm/moving_wall/link_boundary.h"
 #include "lbm/moving_wall/bounce_back.h"
 #include "lbm/moving_wall/bouzidi.h"
 #include "lbm/moving_wall/mei_luo_shyy.h"

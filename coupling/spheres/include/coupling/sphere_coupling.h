@@ -12,7 +12,7 @@
 #include "coupling/particle_view.h"
 #include "coupling/reconstruction/refill.h"
 #include "lbm/fluid_solver.h"
-#include "lbm/link_boundary.h"
+#include "lbm/moving_wall/link_boundary.h"
 #include "lbm/moving_wall/link_mass.h"
 #include "lbm/moving_wall/link_sweep.h"
 

@@ -2,7 +2,7 @@
 // Half-way bounce-back on a moving wall (Ladd 1994): the wall is taken half-way along every
 // link whatever the fraction, so it is first order on curved walls.
 //   f_{-q}(x, t+1) = f*_q(x) - 6 w_q rho0 c_q.u_w
-#include "lbm/link_boundary.h"
+#include "lbm/moving_wall/link_boundary.h"
 #include "lbm/moving_wall/moving_wall_scheme.h"
 
 namespace lbm::moving_wall {

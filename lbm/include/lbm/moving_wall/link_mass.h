@@ -29,7 +29,7 @@
 
 #include "lbm/block_layout.h"
 #include "lbm/d3q19.h"
-#include "lbm/link_boundary.h"
+#include "lbm/moving_wall/link_boundary.h"
 #include "lbm/population_field.h"
 
 namespace lbm::moving_wall {

@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "lbm/block_layout.h"
-#include "lbm/link_boundary.h"
+#include "lbm/moving_wall/link_boundary.h"
 #include "lbm/moving_wall/link_mass.h"
 #include "lbm/moving_wall/moment_cache.h"
 

@@ -15,7 +15,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "lbm/link_boundary.h"
+#include "lbm/moving_wall/link_boundary.h"
 #include "lbm/moving_wall/moment_cache.h"
 #include "lbm/moving_wall/moving_wall_scheme.h"
 

@@ -7,7 +7,7 @@
 //                               const PopulationField& f) const;
 // = f_{-q}(x, t+1) for the link leaving fluid node x = link.fluid_cell in direction q, from
 // the post-collision state f*(t); `offset` is the cell-index step of c_q, so x + offset is
-// the wall node and x - offset the second fluid node. lbm/link_boundary.h picks the scheme
+// the wall node and x - offset the second fluid node. link_boundary.h picks the scheme
 // by this enum once per call; moving_wall::apply runs the chosen one over all links.
 #include <array>
 #include <cstddef>

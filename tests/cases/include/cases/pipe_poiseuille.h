@@ -9,7 +9,7 @@
 
 #include "cases/serial_flow.h"
 #include "lbm/d3q19.h"
-#include "lbm/link_boundary.h"
+#include "lbm/moving_wall/link_boundary.h"
 
 namespace cases {
 

@@ -4,7 +4,7 @@
 
 #include "coupling/mapping/sphere_mapping.h"
 #include "coupling/particle_view.h"
-#include "lbm/link_boundary.h"
+#include "lbm/moving_wall/link_boundary.h"
 
 namespace coupling {
 

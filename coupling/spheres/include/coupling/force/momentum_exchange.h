@@ -3,7 +3,7 @@
 #include <vector>
 
 #include "coupling/boundary/sphere_links.h"
-#include "lbm/link_boundary.h"
+#include "lbm/moving_wall/link_boundary.h"
 
 namespace coupling {
 

@@ -1,7 +1,7 @@
 #pragma once
 // Lattice links cut by a wall (static curved walls, moving spheres in coupling/) and the
 // stage that rebuilds the populations returning from them with one of the moving-wall
-// schemes of lbm/moving_wall/.
+// schemes beside this file (bounce_back.h, bouzidi.h, mei_luo_shyy.h).
 #include <array>
 #include <cstddef>
 #include <cstdint>

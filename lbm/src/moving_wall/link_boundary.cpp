@@ -1,4 +1,4 @@
-#include "lbm/link_boundary.h"
+#include "lbm/moving_wall/link_boundary.h"
 
 #include <algorithm>
 #include <stdexcept>
