@@ -199,6 +199,47 @@ TEST(BurstDetector, StateSaveAndRestoreGivesTheSameRecords) {
   EXPECT_THROW(other.restore({2.0, 1.0}), std::invalid_argument);
 }
 
+// A state written before the burst records carried the wall's hold (version 1: samples of
+// 7 values, records of 10) restores as today's with the hold 0.
+TEST(BurstDetector, VersionOneStateRestoresWithoutTheHold) {
+  Signal signal;
+  signal.pressure = [](long long t) { return ramp_and_drop(t, 3000, 0.4, 200) + (t > 5000 ? 0.05 : 0.0); };
+  signal.count = [](long long t) { return t <= 3000 ? 10LL : 3LL; };
+  BurstDetector today;
+  detect(signal, 5100, today);  // one burst recorded, candidates of the new rise in the window
+  ASSERT_EQ(today.bursts().size(), 1u);
+  std::vector<double> current = today.state();
+  // The same state as version 1 wrote it, and today's with the hold zeroed.
+  constexpr std::size_t kSample = 10, kOldSample = 7, kColumns = BurstRecord::kColumns, kOldColumns = 10;
+  const auto candidates = static_cast<std::size_t>(current[3]), bursts = static_cast<std::size_t>(current[4]);
+  std::vector<double> old{1.0, current[1], current[2], current[3], current[4]}, expected(current.begin(), current.begin() + 5);
+  const double* in = current.data() + 5;
+  auto sample = [&](const double* s, bool flag) {
+    old.insert(old.end(), s, s + kOldSample);
+    expected.insert(expected.end(), s, s + kOldSample);
+    expected.insert(expected.end(), kSample - kOldSample, 0.0);
+    if (flag) {
+      old.push_back(s[kSample]);
+      expected.push_back(s[kSample]);
+    }
+  };
+  for (int k = 0; k < 3; ++k, in += kSample) sample(in, false);
+  for (std::size_t i = 0; i < candidates; ++i, in += kSample + 1) sample(in, true);
+  for (std::size_t i = 0; i < bursts; ++i, in += kColumns) {
+    old.insert(old.end(), in, in + kOldColumns);
+    expected.insert(expected.end(), in, in + kOldColumns);
+    expected.insert(expected.end(), kColumns - kOldColumns, 0.0);
+  }
+  ASSERT_GT(candidates, 0u);
+  BurstDetector resumed;
+  resumed.restore(old);
+  EXPECT_EQ(resumed.state(), expected);
+  EXPECT_EQ(resumed.bursts()[0].wall_force, 0.0);
+  EXPECT_EQ(resumed.bursts()[0].count_before, 10);
+  old.pop_back();
+  EXPECT_THROW(BurstDetector().restore(old), std::invalid_argument);
+}
+
 TEST(BurstDetector, FlushRecordsABurstStillBeingFollowed) {
   Signal signal;
   signal.pressure = [](long long t) { return ramp_and_drop(t, 3000, 0.4, 200); };

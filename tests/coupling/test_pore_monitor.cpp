@@ -80,6 +80,17 @@ TEST(PoreMonitor, DepositsAndCrossingsInHostUnits) {
   PoreMonitor resumed(setup, units);
   resumed.restore(monitor.state());
   EXPECT_EQ(resumed.values(), monitor.values());
+  // A state written before the wall's hold was recorded (kWallForceX values) restores with
+  // the hold 0.
+  std::vector<double> earlier = monitor.state();
+  earlier.erase(earlier.begin() + 1 + PoreMonitor::kWallForceX, earlier.begin() + 1 + PoreMonitor::kCount);
+  earlier[0] = PoreMonitor::kWallForceX;
+  PoreMonitor upgraded(setup, units);
+  upgraded.restore(earlier);
+  std::vector<double> expected = monitor.values();
+  expected[PoreMonitor::kWallForceX] = expected[PoreMonitor::kDepositedOnWall] = 0.0;
+  EXPECT_EQ(upgraded.values(), expected);
+  EXPECT_EQ(monitor.values()[PoreMonitor::kWallForceX], -0.5);
   // A state of another version (its own number of values first) is refused, not misread.
   std::vector<double> foreign = monitor.state();
   foreign[0] = PoreMonitor::kCount - 4;

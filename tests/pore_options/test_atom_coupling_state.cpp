@@ -16,13 +16,14 @@ AtomCouplingState numbered() {
   auto next = [&] { return v += 1.0; };
   for (auto* vec : {&s.load.force, &s.load.torque, &s.load.step_velocity, &s.load.previous_force,
                     &s.load.previous_velocity, &s.step_position, &s.fluid_velocity, &s.wall.normal,
-                    &s.wall.searched_from})
+                    &s.wall.searched_from, &s.last_step_velocity})
     for (double& x : *vec) x = next();
   s.load.coefficient = next();
   s.tag = 42.0;
   s.wall.distance = next();
   s.has_step_position = true;
   s.wall.known = true;
+  s.has_last_step_velocity = true;
   return s;
 }
 
@@ -33,7 +34,8 @@ bool same(const AtomCouplingState& a, const AtomCouplingState& b) {
          a.step_position == b.step_position && a.has_step_position == b.has_step_position &&
          a.fluid_velocity == b.fluid_velocity && a.tag == b.tag && a.wall.known == b.wall.known &&
          a.wall.distance == b.wall.distance && a.wall.normal == b.wall.normal &&
-         a.wall.searched_from == b.wall.searched_from;
+         a.wall.searched_from == b.wall.searched_from && a.last_step_velocity == b.last_step_velocity &&
+         a.has_last_step_velocity == b.has_last_step_velocity;
 }
 }  // namespace
 
@@ -48,8 +50,24 @@ TEST(AtomCouplingState, EveryFieldSurvivesTheFlatBuffer) {
   // All values distinct: a field packed twice or not at all would show.
   std::vector<double> sorted(buffer.begin(), buffer.end() - 1);
   std::sort(sorted.begin(), sorted.end());
-  EXPECT_EQ(std::unique(sorted.begin(), sorted.end()) - sorted.begin(), AtomCouplingState::kDoubles - 1)
-      << "only the two flags share the value 1";
+  EXPECT_EQ(std::unique(sorted.begin(), sorted.end()) - sorted.begin(), AtomCouplingState::kDoubles - 2)
+      << "only the three flags share the value 1";
+}
+
+// A restart file of the layout before last_step_velocity: its kDoubles1 values are the
+// prefix of today's, the field added since starts unset (the two-step mean then begins with
+// the one-step one).
+TEST(AtomCouplingState, TheEarlierLayoutReadsAsAPrefix) {
+  const AtomCouplingState s = numbered();
+  std::vector<double> buffer(AtomCouplingState::kDoubles);
+  s.pack(buffer.data());
+  AtomCouplingState back;
+  back.last_step_velocity = {9.0, 9.0, 9.0};
+  back.unpack(buffer.data(), AtomCouplingState::kDoubles1);
+  AtomCouplingState expected = s;
+  expected.last_step_velocity = {0.0, 0.0, 0.0};
+  expected.has_last_step_velocity = false;
+  EXPECT_TRUE(same(expected, back));
 }
 
 TEST(AtomCouplingState, ReverseCommunicationSumsTheForceTorqueAndCoefficient) {
