@@ -166,10 +166,13 @@ def _mpirun(mpirun, ranks):
 # quit, from which the next launch of the study resumes.
 _RUNNING = set()
 _RUNNING_LOCK = threading.Lock()
+_STOPPING = threading.Event()  # set by stop_running_launches: no launch starts after it
 
 
 def stop_running_launches(signum=signal.SIGTERM, wait=60):
-    """Sends signum to every launch under way and waits up to `wait` s for them to end."""
+    """Sends signum to every launch under way, lets no other start, and waits up to `wait` s
+    for them to end."""
+    _STOPPING.set()
     with _RUNNING_LOCK:
         running = list(_RUNNING)
     for proc in running:
@@ -188,12 +191,17 @@ def stop_running_launches(signum=signal.SIGTERM, wait=60):
 def _execute(cmd, cwd, stdout_path, timeout):
     """Runs cmd in its own process group (so a timeout kills mpirun and its ranks, which
     `timeout mpirun ...` leaves running) and returns its exit code (None: timed out). The
-    screen output is appended: a resumed run's launches follow each other in one file."""
+    screen output is appended: a resumed run's launches follow each other in one file.
+    Launches nothing (returns None) once the runner is stopping."""
+    if _STOPPING.is_set():
+        return None
     with open(stdout_path, "a") as out:
         proc = subprocess.Popen(cmd, cwd=cwd, stdout=out, stderr=subprocess.STDOUT,
                                 start_new_session=True)
         with _RUNNING_LOCK:
             _RUNNING.add(proc)
+        if _STOPPING.is_set():  # the stop came between the check above and the start
+            os.killpg(proc.pid, signal.SIGTERM)
         try:
             return proc.wait(timeout=timeout)
         except subprocess.TimeoutExpired:

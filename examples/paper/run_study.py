@@ -87,6 +87,9 @@ def main():
                         help="run again the runs that failed (from their restart files)")
     parser.add_argument("--progress-every", type=float, default=60.0, metavar="S")
     parser.add_argument("--dry-run", action="store_true", help="print the plan and the cost only")
+    parser.add_argument("--summarize", action="store_true",
+                        help="launch nothing: summarize and analyze the runs as they stand (also "
+                             "while the study runs, from another shell)")
     parser.add_argument("--no-analysis", action="store_true")
     args = parser.parse_args()
 
@@ -114,10 +117,10 @@ def main():
             shutil.rmtree(os.path.join(out, folder), ignore_errors=True)
         if os.path.exists(os.path.join(out, "in.pore")):
             os.remove(os.path.join(out, "in.pore"))  # a fresh copy of the scene (ensemble.study_scene)
-    else:
+    elif not args.summarize:
         shutil.rmtree(os.path.join(out, "launches"), ignore_errors=True)  # partitions' scratch
     os.makedirs(out, exist_ok=True)
-    for name, knobs in runs:
+    for name, knobs in runs if not args.summarize else []:
         action, detail = ensemble.plan_run(os.path.join(out, "runs", name), knobs, args.retry_failed)
         what = {"skip": f"left alone ({detail})", "fresh": f"starts ({detail})",
                 "resume": f"resumes from {os.path.basename(detail[0]) if detail else ''}"}[action]
@@ -132,9 +135,11 @@ def main():
     signal.signal(signal.SIGTERM, stop)
     signal.signal(signal.SIGINT, stop)
     launch = ensemble.launch_pool if args.mode == "pool" else ensemble.launch_partitions
-    with StudyProgress(out, runs, args.parallel, args.progress_every) as progress:
-        launches = launch(args.driver, out, runs, args.parallel, args.ranks_per_run, args.mpirun,
-                          args.timeout, progress=progress, retry_failed=args.retry_failed)
+    launches = []
+    if not args.summarize:
+        with StudyProgress(out, runs, args.parallel, args.progress_every) as progress:
+            launches = launch(args.driver, out, runs, args.parallel, args.ranks_per_run, args.mpirun,
+                              args.timeout, progress=progress, retry_failed=args.retry_failed)
     for entry in launches:
         print(f"launch ({entry['seconds']} s, exit {entry['exit_code']}): "
               + " ".join(shlex.quote(c) for c in entry["command"]))
@@ -143,7 +148,7 @@ def main():
         with open(earlier) as f:
             launches = json.load(f).get("launches", []) + launches
     summary = ensemble.write_summary(out, args.study, args.size, runs, launches, args.mode)
-    if not args.no_analysis and summary["finished"]:
+    if not args.no_analysis and (summary["finished"] or args.summarize):
         import analyze
         analyze.analyze(out)
     return 0 if summary["finished"] else 1

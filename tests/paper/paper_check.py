@@ -18,7 +18,10 @@ own files independently of the code it checks:
             round-off for the first fluid steps after it (a LIGGGHTS restart equals a run split
             at that step bit for bit, tests/faults; the split itself re-sorts the atoms, so
             the chaotic run then drifts away), every thermo step of the uninterrupted run once,
-            and no burst recorded twice. A third launch leaves the finished run alone.
+            and no burst recorded twice. Then SIGTERM to a runner alone (Ctrl-C, a batch
+            system's end of job): it passes the request on, its run writes a forced restart
+            file and stops, no process is left, and the same command resumes from that file.
+            A third launch leaves the finished run alone.
 
 Usage: paper_check.py --driver liggghts-lbm --repo <source root> --python /usr/bin/python3 <case>
 """
@@ -188,6 +191,35 @@ def resume(args, work):
     shown = [line for line in second.stdout.splitlines() if "progress:" in line and "seed_100003 " in line]
     ok &= check("progress shows the running run's step", bool(shown), shown[-1:] if shown else None,
                 "a line with the run, its step and the time left")
+    # SIGTERM to the runner alone (Ctrl-C, a batch system's end of job): it passes the
+    # request on, the run writes its forced restart file at the next fluid step and stops,
+    # and the same command resumes from that file.
+    term = os.path.join(work, "term")
+    term_log = os.path.join(term, "runs", "seed_100003", "log.liggghts")
+    cmd_term = [args.python, os.path.join(args.repo, "examples", "paper", "run_study.py"), *base,
+                "--driver", args.driver, "--out", term]
+    runner = subprocess.Popen(cmd_term, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                              start_new_session=True)
+    deadline = time.time() + 150
+    while runner.poll() is None and time.time() < deadline:
+        time.sleep(0.05)
+        steps = thermo_column(term_log, "pore[16]")[0] if os.path.exists(term_log) else []
+        if steps and steps[-1] >= 0.4 * 1002000:
+            runner.send_signal(signal.SIGTERM)
+            break
+    try:
+        runner.wait(timeout=90)
+    except subprocess.TimeoutExpired:
+        os.killpg(runner.pid, signal.SIGKILL)
+    left = subprocess.run(["pgrep", "-f", term], capture_output=True, text=True).stdout.split()
+    forced = [n for n in os.listdir(os.path.dirname(term_log)) if n.startswith("restart_forced_liggghts_")]
+    ok &= check("SIGTERM stops the runs with a restart file", not left and len(forced) == 1,
+                f"processes left {left}, forced restart files {forced}", "none left, one file")
+    resumed = run_study(args, term, *base)
+    ok &= check("resumed from the forced restart", "resumes from restart_forced_liggghts_" in resumed.stdout
+                and json.load(open(os.path.join(term, "summary.json")))["finished"] == 1,
+                [line for line in resumed.stdout.splitlines() if "seed_100003:" in line and "-var" not in line],
+                "'resumes from restart_forced_liggghts_...', then done")
     third = run_study(args, cut, *base)
     ok &= check("a finished run is left alone", "left alone (done)" in third.stdout
                 and "launch (" not in third.stdout.split("progress:")[-1], "see above", "left alone, no launch")

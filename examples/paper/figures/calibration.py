@@ -1,0 +1,92 @@
+"""The calibration of the inlet velocity (the paper gives none): per run of the calibration
+study, what a deposit grows to and how it is held, and the pressure loss over time per run.
+
+Per run, from its own files (every run, finished or cut short, up to its last thermo row):
+the fluid steps made and how the run ended; the largest deposited count and V_dep [d^3];
+P_0 (the clean pore, figures.common.clean_pressure) and P_max [P_out]; the bursts with the
+deposits at their peaks; at each peak the wall's hold along the flow against P pi D^2 / 4
+(burst records); the largest lattice Mach number. The study's default velocity is the
+largest whose bursts carry at least 15 deposited particles at 0.3-0.6 P_out
+(CRITERION_COUNT, CRITERION_P) and whose runs go on to their end.
+
+Usage: analyze.py <calibration study folder>   (writes calibration.md beside the plot)"""
+import os
+
+import numpy as np
+
+from figures.common import bursts, clean_pressure, plt, result, save, thermo
+from study_io import lattice_timing
+
+CRITERION_COUNT, CRITERION_P = 15, (0.3, 0.6)
+
+
+def run_row(run):
+    columns = thermo(run["folder"])
+    row = dict(name=run["name"], u=float(run["knobs"]["u_lattice"]), seed=run["knobs"]["seed"],
+               state=run["state"], reason=run.get("reason", ""))
+    if "pore[16]" not in columns:
+        return row, columns
+    steps = np.asarray(columns["Step"], float)
+    n_dem = lattice_timing(run["folder"])["n_dem"]
+    warmup = float(run["knobs"]["warmup"])
+    after = steps > warmup
+    rows = bursts(run["folder"])
+    holds = [(-b["wall_F"] / b["P_pi_D2_4"]) for b in rows if b.get("P_pi_D2_4")]
+    row.update(fluid_steps=int(steps[-1] // n_dem), count=int(np.max(columns["pore[7]"])),
+               V_dep=float(np.max(columns["pore[6]"])), P0=clean_pressure(run),
+               P_max=float(np.max(np.asarray(columns["pore[16]"])[after])) if after.any() else np.nan,
+               mach=float(np.max(columns["pore[10]"])), bursts=len(rows),
+               peaks=[(b["P_peak"], int(b["count_before"])) for b in rows],
+               hold=float(np.median(holds)) if holds else np.nan,
+               qualifying=sum(1 for b in rows if b["count_before"] >= CRITERION_COUNT
+                              and CRITERION_P[0] <= b["P_peak"] <= CRITERION_P[1]))
+    return row, columns
+
+
+def table(rows):
+    lines = ["| run | u_lattice | ended | fluid steps | largest deposit (count, V_dep [d^3]) | P_0 | P_max "
+             "| bursts (P_peak: deposited) | wall hold / (P pi D^2/4) at peaks, median | max Mach |",
+             "|---|---|---|---|---|---|---|---|---|---|"]
+    for r in rows:
+        if "fluid_steps" not in r:
+            lines.append(f"| {r['name']} | {r['u']:g} | {r['state']} | - | - | - | - | - | - | - |")
+            continue
+        ended = r["state"] if r["state"] != "failed" else "stopped: " + r["reason"].split(":")[-1][:60]
+        peaks = ", ".join(f"{p:.2f}: {c}" for p, c in r["peaks"][:8]) + (" ..." if len(r["peaks"]) > 8 else "")
+        lines.append(f"| {r['name']} | {r['u']:g} | {ended} | {r['fluid_steps']} | {r['count']}, {r['V_dep']:.2f} "
+                     f"| {r['P0']:.3f} | {r['P_max']:.3f} | {r['bursts']} ({peaks or 'none'}) "
+                     f"| {r['hold']:.2f} | {r['mach']:.3f} |")
+    return "\n".join(lines)
+
+
+def analyze(summary, out_dir):
+    runs = summary["runs"]
+    rows, series = [], []
+    for run in runs:
+        row, columns = run_row(run)
+        rows.append(row)
+        series.append((row, columns))
+    fig, axes = plt.subplots(2, 1, figsize=(7, 6.5), sharex=True)
+    for k, (row, columns) in enumerate(series):
+        if "pore[16]" not in columns:
+            continue
+        n_dem = lattice_timing(runs[k]["folder"])["n_dem"]
+        t = np.asarray(columns["Step"], float) / n_dem
+        axes[0].plot(t, columns["pore[16]"], lw=0.7, label=f"u {row['u']:g}, seed {row['seed']}")
+        axes[1].plot(t, columns["pore[7]"], lw=0.7)
+    axes[0].axhspan(*CRITERION_P, color="0.9", zorder=0)
+    axes[0].set_ylabel("P [P_out]")
+    axes[1].set_ylabel("deposited particles")
+    axes[1].axhline(CRITERION_COUNT, color="0.5", ls=":")
+    axes[1].set_xlabel("fluid steps")
+    axes[0].legend(fontsize=7, ncol=2)
+    plot = save(fig, out_dir, "calibration")
+    text = table(rows)
+    with open(os.path.join(out_dir, "calibration.md"), "w") as f:
+        f.write(text + "\n")
+    qualifying = sorted({r["u"] for r in rows if r.get("qualifying") and r["state"] == "done"})
+    choice = f"u_lattice {max(qualifying):g}" if qualifying else "none of the runs qualifies yet"
+    return result(summary, "calibration", "the largest u_lattice whose bursts carry >= 15 deposited "
+                  "particles at 0.3-0.6 P_out and whose runs reach their end",
+                  "not given (the paper's bursts: 0.3-0.6 P_out, 20-40 deposited particles)", choice, plot,
+                  table=text, runs_rows=rows)
