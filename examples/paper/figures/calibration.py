@@ -11,6 +11,7 @@ largest whose bursts carry at least 15 deposited particles at 0.3-0.6 P_out
 
 Usage: analyze.py <calibration study folder>   (writes calibration.md beside the plot)"""
 import os
+import re
 
 import numpy as np
 
@@ -43,6 +44,14 @@ def run_row(run):
     return row, columns
 
 
+def stop_reason(error):
+    """The ERROR line in a few words: the fluid guard with its node's density and speed."""
+    m = re.search(r"fluid became unstable at DEM step (\d+).*density ([-\w.]+), speed ([-\w.]+)", error)
+    if m:
+        return f"fluid guard at DEM step {m.group(1)} (density {m.group(2)}, speed {m.group(3)})"
+    return error.replace("ERROR on proc 0: ", "")[:80]
+
+
 def table(rows):
     lines = ["| run | u_lattice | ended | fluid steps | largest deposit (count, V_dep [d^3]) | P_0 | P_max "
              "| bursts (P_peak: deposited) | wall hold / (P pi D^2/4) at peaks, median | max Mach |",
@@ -51,7 +60,7 @@ def table(rows):
         if "fluid_steps" not in r:
             lines.append(f"| {r['name']} | {r['u']:g} | {r['state']} | - | - | - | - | - | - | - |")
             continue
-        ended = r["state"] if r["state"] != "failed" else "stopped: " + r["reason"].split(":")[-1][:60]
+        ended = r["state"] if r["state"] != "failed" else "stopped: " + stop_reason(r["reason"])
         peaks = ", ".join(f"{p:.2f}: {c}" for p, c in r["peaks"][:8]) + (" ..." if len(r["peaks"]) > 8 else "")
         lines.append(f"| {r['name']} | {r['u']:g} | {ended} | {r['fluid_steps']} | {r['count']}, {r['V_dep']:.2f} "
                      f"| {r['P0']:.3f} | {r['P_max']:.3f} | {r['bursts']} ({peaks or 'none'}) "

@@ -1,0 +1,67 @@
+#!/usr/bin/python3
+"""Copies what a study's evidence needs into a small folder that can be kept in the
+repository (a study's own folder holds restart files and fluid checkpoints of tens of MB):
+summary.txt, results.json and the plots, the analysis's table if any, and per run its
+bursts.txt and the thermo columns the analyses read (thermo.csv, every `every`-th row and
+every row within a burst's window), with the ERROR line of a run that stopped.
+
+Usage: compact_study.py <study folder> <destination> [--every N]
+"""
+import argparse
+import csv
+import glob
+import os
+import shutil
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import study_io  # noqa: E402
+from ensemble import run_state  # noqa: E402
+
+COLUMNS = ("Step", "Atoms", "pore[16]", "pore[17]", "pore[7]", "pore[6]", "pore[8]", "pore[10]",
+           "walls[2]", "pore[14]", "pore[18]")
+
+
+def compact(study, dest, every=10):
+    os.makedirs(dest, exist_ok=True)
+    for pattern in ("summary.txt", "results.json", "*.png", "calibration.md", "progress.txt"):
+        for path in glob.glob(os.path.join(study, pattern)):
+            shutil.copy(path, dest)
+            if path.endswith((".txt", ".json", ".md")):  # the study's own paths, relative
+                target = os.path.join(dest, os.path.basename(path))
+                with open(target) as f:
+                    text = f.read()
+                with open(target, "w") as f:
+                    f.write(text.replace(os.path.abspath(study) + "/", "").replace(os.path.abspath(study), "."))
+    for run in sorted(glob.glob(os.path.join(study, "runs", "*"))):
+        name = os.path.basename(run)
+        out = os.path.join(dest, "runs", name)
+        os.makedirs(out, exist_ok=True)
+        for keep in ("bursts.txt", "knobs.json"):
+            if os.path.exists(os.path.join(run, keep)):
+                shutil.copy(os.path.join(run, keep), out)
+        state, reason = run_state(run)
+        with open(os.path.join(out, "state.txt"), "w") as f:
+            f.write(f"{state}\n{reason}\n")
+        columns = study_io.thermo(run)
+        if not columns:
+            continue
+        names = [c for c in COLUMNS if c in columns]
+        peaks = [b["step"] for b in study_io.bursts(run)]
+        steps = columns["Step"]
+        near = lambda s: any(abs(s - p) <= 2e5 for p in peaks)  # noqa: E731
+        with open(os.path.join(out, "thermo.csv"), "w", newline="") as f:
+            w = csv.writer(f)
+            w.writerow(names)
+            for i, s in enumerate(steps):
+                if i % every == 0 or i == len(steps) - 1 or near(s):
+                    w.writerow([f"{columns[c][i]:.8g}" for c in names])
+
+
+if __name__ == "__main__":
+    parser = argparse.ArgumentParser()
+    parser.add_argument("study")
+    parser.add_argument("dest")
+    parser.add_argument("--every", type=int, default=10)
+    args = parser.parse_args()
+    compact(args.study, args.dest, args.every)
