@@ -159,14 +159,16 @@ def phaseac(size):
 
 
 def phasead(size):
-    # d = 1 stays the unit of the table; d / D changes through D, with L = 1.2 D
+    """The caption's sweep: "since we change here the particle diameter", at L = 1.2 D. The
+    pore stays the default's D; the particles' mean diameter d_particle (in the table's unit d,
+    which keeps the table's coefficients) is d / D times D."""
     ka = _counts(size, [0.1], [0.03, 0.1, 0.3], [0.02, 0.04, 0.06, 0.1, 0.15, 0.2, 0.3])
     d_over_D = _counts(size, [0.25, 0.3], [0.2, 0.36], [0.15, 0.2, 0.25, 0.3, 0.35, 0.4])
     runs = []
     for a in ka:
         for r in d_over_D:
-            knobs = _base(size, seed=100003, ka=a)
-            knobs.update(scene(knobs["cells_per_d"], D=1 / r, Lp=1.2 / r))
+            knobs = _base(size, seed=100003, ka=a, d_particle=f"{r * PAPER['D']:.6g}")
+            knobs.update(scene(knobs["cells_per_d"], Lp=1.2 * PAPER["D"]))
             runs.append((f"ka_{a:g}_d_over_D_{r:g}", knobs))
     return runs
 
