@@ -173,6 +173,11 @@ PoreOptions parse_pore_options(const std::vector<std::string>& args) {
       o.lubrication = words.yes_no(key);
     } else if (key == "lubrication_cutoff") {
       o.lubrication_cutoff = words.number(key, 0.0, 2.0);
+    } else if (key == "deposit_region") {
+      const std::string v = words.text(key);
+      if (v != "from_inlet" && v != "pore")
+        fail("keyword 'deposit_region' = '" + v + "': must be 'from_inlet' or 'pore'");
+      o.deposits_in_pore_only = v == "pore";
     } else if (key == "deposit_speed") {
       o.deposit_speed = words.number(key, 0.0, kInf, false);
     } else if (key == "burst_drop") {
@@ -205,7 +210,7 @@ PoreOptions parse_pore_options(const std::vector<std::string>& args) {
 
 const char* pore_options_usage() {
   return "dx, rho, nu, n_dem, magic, scene (pore|voxels), origin, lateral, velocity, "
-         "pressure_loss, boundary, mass_correction, reference_pressure, rotation, lubrication, lubrication_cutoff, deposit_speed, burst_drop, "
+         "pressure_loss, boundary, mass_correction, reference_pressure, rotation, lubrication, lubrication_cutoff, deposit_region, deposit_speed, burst_drop, "
          "burst_window, burst_deposits, burst_file, vtk, "
          "checkpoint, checkpoint_keep";
 }

@@ -40,6 +40,9 @@ struct PoreOptions {
   // torque and the fluid sees the particles without spin (integrate them with fix nve).
   bool rotation = true;
   double lubrication_cutoff = 2.0 / 3.0;  // in lattice cells
+  // Where a deposit counts: the pore's cylinder from the end of the inlet region (through
+  // the free region, the pore's mouth included) or inside the pore alone.
+  bool deposits_in_pore_only = false;
   double deposit_speed = -1.0;            // < 0: 10 % of the inlet velocity (1e-4 lattice with a pressure drive)
   // Erosive bursts (coupling/diagnostics/burst_detector.h): a peak of the pressure loss
   // followed by a fall of at least burst_drop (fraction of the peak) within burst_window

@@ -95,7 +95,8 @@ SceneSetup build_scene(const PoreOptions& o, const double* box_lo) {
     spec.width = cells(o.width, dx);
     spec.pore_diameter = o.pore_diameter / dx;
     scene.geometry = std::make_shared<lbm::VoxelGeometry>(lbm::make_pore_scene(spec, dx, origin));
-    scene.monitor = coupling::pore_scene_monitor(spec);
+    scene.monitor = coupling::pore_scene_monitor(
+        spec, o.deposits_in_pore_only ? coupling::DepositRegion::kPore : coupling::DepositRegion::kFromInlet);
     return scene;
   }
   auto file = std::make_shared<lbm::VoxelGeometry>(lbm::load_voxel_file(o.voxel_file));

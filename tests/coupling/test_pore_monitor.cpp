@@ -54,6 +54,9 @@ TEST(PoreMonitor, DepositsAndCrossingsInHostUnits) {
   EXPECT_DOUBLE_EQ(setup.inlet_plane, 3.5);
   EXPECT_DOUBLE_EQ(setup.outlet_plane, 13.5);
   EXPECT_EQ(setup.flow_length, 18);
+  EXPECT_DOUBLE_EQ(setup.pore.start, 3.5);  // from the end of the inlet region, by default
+  EXPECT_DOUBLE_EQ(pore_scene_monitor(spec, DepositRegion::kPore).pore.start, 7.5);  // the pore alone
+  EXPECT_DOUBLE_EQ(pore_scene_monitor(spec, DepositRegion::kPore).pore.end, setup.pore.end);
   UnitInputs in;
   in.dx = 2.0;  // volumes scale with 8, lengths with 2
   in.dt_dem = 0.01;

@@ -39,7 +39,7 @@ TEST(PoreOptions, AllKeywords) {
   const auto o = lbm_pore::parse_pore_options(
       split("dx 1 rho 2 nu 0.1 n_dem 50 magic 0.25 scene voxels g.raw origin 0 1 2 lateral wall "
             "pressure_loss 0.02 boundary bouzidi mass_correction no lubrication no lubrication_cutoff 0.5 "
-            "deposit_speed 0.001 vtk 10 out checkpoint ck reference_pressure keep checkpoint_keep 2"));
+            "deposit_speed 0.001 vtk 10 out checkpoint ck reference_pressure keep checkpoint_keep 2 deposit_region pore"));
   EXPECT_EQ(o.voxel_file, "g.raw");
   EXPECT_FALSE(o.lateral_periodic);
   EXPECT_EQ(o.drive, lbm_pore::PoreOptions::Drive::kPressureLoss);
@@ -51,6 +51,7 @@ TEST(PoreOptions, AllKeywords) {
   EXPECT_EQ(o.checkpoint_prefix, "ck");
   EXPECT_TRUE(o.keep_reference_pressure);
   EXPECT_EQ(o.checkpoint_keep, 2);
+  EXPECT_TRUE(o.deposits_in_pore_only);
 }
 
 TEST(PoreOptions, BadValuesNameTheKeywordAndRange) {
@@ -63,6 +64,8 @@ TEST(PoreOptions, BadValuesNameTheKeywordAndRange) {
             std::string::npos);
   EXPECT_NE(error_of("dx 1 colour red" + kScene).find("unknown keyword 'colour'"), std::string::npos);
   EXPECT_NE(error_of("dx 1 reference_pressure literal" + kScene).find("'reference_pressure' = 'literal': must be 'remove' or 'keep'"),
+            std::string::npos);
+  EXPECT_NE(error_of("dx 1 deposit_region inlet" + kScene).find("'deposit_region' = 'inlet': must be 'from_inlet' or 'pore'"),
             std::string::npos);
   EXPECT_NE(error_of("dx 1 checkpoint_keep -1" + kScene).find("'checkpoint_keep' = '-1': must be an integer in [0,"),
             std::string::npos);

@@ -10,11 +10,11 @@
 
 namespace coupling {
 
-PoreMonitorSetup pore_scene_monitor(const lbm::PoreSceneSpec& spec) {
+PoreMonitorSetup pore_scene_monitor(const lbm::PoreSceneSpec& spec, DepositRegion region) {
   const auto r = lbm::regions_of(spec);
   PoreMonitorSetup s;
   s.pore.axis = 0;
-  s.pore.start = r.inlet_end - 0.5;
+  s.pore.start = (region == DepositRegion::kPore ? r.pore_begin : r.inlet_end) - 0.5;
   s.pore.end = r.pore_end - 0.5;
   s.pore.centre = {r.axis_y, r.axis_z};
   s.pore.diameter = spec.pore_diameter;

@@ -19,6 +19,31 @@ from figures.common import bursts, clean_pressure, plt, result, save, thermo
 from study_io import lattice_timing
 
 CRITERION_COUNT, CRITERION_P = 15, (0.3, 0.6)
+# in.pore's five size templates: radii (in d_particle) and number weights.
+TEMPLATES = ((0.4, 0.054), (0.45, 0.244), (0.5, 0.404), (0.55, 0.244), (0.6, 0.054))
+
+
+def inlet_rate_ratio(run, columns):
+    """Particles crossing the inlet plane per fluid step after the warm-up (f_pore[4]) over
+    the nominal c_in u_in W^2 / V_p (the mean template volume): 1 when region I is kept at
+    c_in and its particles leave it with the flow."""
+    knobs = run["knobs"]
+    if "pore[4]" not in columns:
+        return np.nan
+    steps = np.asarray(columns["Step"], float)
+    crossed = np.asarray(columns["pore[4]"], float)
+    warmup = float(knobs["warmup"])
+    n_dem = lattice_timing(run["folder"])["n_dem"]
+    after = steps > warmup + 0.1 * (steps[-1] - warmup)  # past the first fill of region I
+    if after.sum() < 2:
+        return np.nan
+    rate = (crossed[after][-1] - crossed[after][0]) / ((steps[after][-1] - steps[after][0]) / n_dem)
+    cells = float(knobs["cells_per_d"])
+    d = float(knobs.get("d_particle", 1.0)) * cells
+    volume = sum(w * 4.0 / 3.0 * np.pi * (r * d) ** 3 for r, w in TEMPLATES)
+    width = round(float(knobs["W"]) * cells)
+    nominal = float(knobs.get("c_in", 0.05)) * float(knobs["u_lattice"]) * width * width / volume
+    return rate / nominal
 
 
 def run_row(run):
@@ -37,6 +62,7 @@ def run_row(run):
                V_dep=float(np.max(columns["pore[6]"])), P0=clean_pressure(run),
                P_max=float(np.max(np.asarray(columns["pore[16]"])[after])) if after.any() else np.nan,
                mach=float(np.max(columns["pore[10]"])), bursts=len(rows),
+               inlet=inlet_rate_ratio(run, columns),
                peaks=[(b["P_peak"], int(b["count_before"])) for b in rows],
                hold=float(np.median(holds)) if holds else np.nan,
                qualifying=sum(1 for b in rows if b["count_before"] >= CRITERION_COUNT
@@ -54,17 +80,18 @@ def stop_reason(error):
 
 def table(rows):
     lines = ["| run | u_lattice | ended | fluid steps | largest deposit (count, V_dep [d^3]) | P_0 | P_max "
-             "| bursts (P_peak: deposited) | wall hold / (P pi D^2/4) at peaks, median | max Mach |",
-             "|---|---|---|---|---|---|---|---|---|---|"]
+             "| bursts (P_peak: deposited) | wall hold / (P pi D^2/4) at peaks, median | max Mach "
+             "| inlet rate / c_in u_in W^2 / V_p |",
+             "|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         if "fluid_steps" not in r:
-            lines.append(f"| {r['name']} | {r['u']:g} | {r['state']} | - | - | - | - | - | - | - |")
+            lines.append(f"| {r['name']} | {r['u']:g} | {r['state']} | - | - | - | - | - | - | - | - |")
             continue
         ended = r["state"] if r["state"] != "failed" else "stopped: " + stop_reason(r["reason"])
         peaks = ", ".join(f"{p:.2f}: {c}" for p, c in r["peaks"][:8]) + (" ..." if len(r["peaks"]) > 8 else "")
         lines.append(f"| {r['name']} | {r['u']:g} | {ended} | {r['fluid_steps']} | {r['count']}, {r['V_dep']:.2f} "
                      f"| {r['P0']:.3f} | {r['P_max']:.3f} | {r['bursts']} ({peaks or 'none'}) "
-                     f"| {r['hold']:.2f} | {r['mach']:.3f} |")
+                     f"| {r['hold']:.2f} | {r['mach']:.3f} | {r['inlet']:.2f} |")
     return "\n".join(lines)
 
 

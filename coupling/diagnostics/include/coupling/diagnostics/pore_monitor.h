@@ -32,9 +32,13 @@ struct PoreMonitorSetup {
 };
 
 // The paper's scene: "located inside the pore radius" (Sec. III) is the pore's cylinder,
-// extended upstream through the free region so a clog sitting in the pore's mouth counts
-// too; particles are counted where they leave the inlet region and enter the outlet region.
-PoreMonitorSetup pore_scene_monitor(const lbm::PoreSceneSpec& spec);
+// by default extended upstream through the free region so a clog sitting in the pore's
+// mouth counts too (DepositRegion::kFromInlet), or the pore alone (kPore: particles queued
+// in the free region upstream, inside the radius, do not count); particles are counted where
+// they leave the inlet region and enter the outlet region.
+enum class DepositRegion { kFromInlet, kPore };
+PoreMonitorSetup pore_scene_monitor(const lbm::PoreSceneSpec& spec,
+                                    DepositRegion region = DepositRegion::kFromInlet);
 // A geometry from a voxel file: deposits count anywhere in the lattice, D is the equivalent
 // diameter of the narrowest cross-section, the planes one node inside either end.
 PoreMonitorSetup voxel_geometry_monitor(const lbm::VoxelGeometry& geometry);
