@@ -4,7 +4,8 @@
   run_study.py <study> [--size tiny|quick|paper] [--out DIR] [--parallel P] [--ranks-per-run K]
                [--mode pool|partitions] [--driver liggghts-lbm] [--mpirun mpirun]
                [--timeout S] [--add-run NAME:knob=value,...] [--set knob=value ...]
-               [--restart-every FLUID_STEPS] [--fresh] [--retry-failed] [--progress-every S]
+               [--restart-every FLUID_STEPS] [--fresh] [--retry-failed] [--runs REGEX]
+               [--progress-every S] [--summarize]
                [--dry-run] [--no-analysis]
 
 Studies: singlejump collection dropvol porelength porediameter phaseac phasead conc pvpflux
@@ -31,6 +32,7 @@ While the runs go on it prints, every --progress-every seconds (and keeps in
 """
 import argparse
 import json
+import re
 import os
 import shlex
 import shutil
@@ -83,6 +85,8 @@ def main():
     parser.add_argument("--restart-every", type=int, default=None, metavar="FLUID_STEPS",
                         help="fluid steps between restart files (default: 1/50 of a run)")
     parser.add_argument("--fresh", action="store_true", help="delete the runs made before")
+    parser.add_argument("--runs", metavar="REGEX", default=None,
+                        help="launch only the runs whose names match (the others are left as they are)")
     parser.add_argument("--retry-failed", action="store_true",
                         help="run again the runs that failed (from their restart files)")
     parser.add_argument("--progress-every", type=float, default=60.0, metavar="S")
@@ -136,9 +140,10 @@ def main():
     signal.signal(signal.SIGINT, stop)
     launch = ensemble.launch_pool if args.mode == "pool" else ensemble.launch_partitions
     launches = []
+    chosen = [(name, knobs) for name, knobs in runs if not args.runs or re.search(args.runs, name)]
     if not args.summarize:
-        with StudyProgress(out, runs, args.parallel, args.progress_every) as progress:
-            launches = launch(args.driver, out, runs, args.parallel, args.ranks_per_run, args.mpirun,
+        with StudyProgress(out, chosen, args.parallel, args.progress_every) as progress:
+            launches = launch(args.driver, out, chosen, args.parallel, args.ranks_per_run, args.mpirun,
                               args.timeout, progress=progress, retry_failed=args.retry_failed)
     for entry in launches:
         print(f"launch ({entry['seconds']} s, exit {entry['exit_code']}): "
