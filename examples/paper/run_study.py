@@ -125,6 +125,8 @@ def main():
         shutil.rmtree(os.path.join(out, "launches"), ignore_errors=True)  # partitions' scratch
     os.makedirs(out, exist_ok=True)
     for name, knobs in runs if not args.summarize else []:
+        if args.runs and not re.search(args.runs, name):
+            continue
         action, detail = ensemble.plan_run(os.path.join(out, "runs", name), knobs, args.retry_failed)
         what = {"skip": f"left alone ({detail})", "fresh": f"starts ({detail})",
                 "resume": f"resumes from {os.path.basename(detail[0]) if detail else ''}"}[action]
