@@ -9,10 +9,10 @@
 
 #include "atom.h"
 #include "comm.h"
-#include "coupling/boundary/wall_velocity.h"
 #include "coupling/diagnostics/particle_probes.h"
 #include "coupling/lattice_frame.h"
 #include "coupling/sphere_coupling.h"
+#include "coupling/step_policy.h"
 #include "coupling/unit_conversion.h"
 #include "domain.h"
 #include "error.h"
@@ -38,13 +38,6 @@
 
 using namespace LAMMPS_NS;
 
-namespace {
-// Wraps a coupling/ or lbm/ error into LIGGGHTS's, naming the command once.
-std::string fix_message(const std::string& what) {
-  return what.rfind("fix lbm/pore", 0) == 0 ? what : "fix lbm/pore: " + what;
-}
-}  // namespace
-
 FixLbmPore::FixLbmPore(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg, arg) {
   lbm_pore::refuse_second_instance(modify, error, this);
   std::vector<std::string> words(arg + 3, arg + narg);
@@ -52,9 +45,7 @@ FixLbmPore::FixLbmPore(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg, arg) 
     options_ = lbm_pore::parse_pore_options(words);
     lbm_pore::check_output_paths(options_);
     build_geometry();
-  } catch (const lbm::InputError& e) {
-    error->all(FLERR, fix_message(e.what()).c_str());
-  } catch (...) {  // std::bad_alloc and the like, as a LIGGGHTS error
+  } catch (...) {  // lbm::InputError on every rank, std::bad_alloc and the like: a LIGGGHTS error
     lbm_pore::report_current_exception(error, "fix lbm/pore", lbm_pore::ErrorScope::kAllRanks);
   }
   if (!atom->radius_flag)
@@ -115,8 +106,6 @@ void FixLbmPore::init() {
       build_lattice();
     }
     lbm_pore::check_neighbor_skin(options_, neighbor->skin);
-  } catch (const lbm::InputError& e) {
-    error->all(FLERR, fix_message(e.what()).c_str());
   } catch (...) {
     lbm_pore::report_current_exception(error, "fix lbm/pore", lbm_pore::ErrorScope::kAllRanks);
   }
@@ -245,7 +234,7 @@ void FixLbmPore::setup(int vflag) {
   lp.gravity = gravity_;
   load_model_ = std::make_unique<coupling::SubstepLoadModel>(lp);
   pairs_step_ = -1;  // the neighbour list was rebuilt (atoms may have been re-sorted)
-  timer_.start(MPI_Wtime());
+  timer_.start();
   if (resumed_) {
     resumed_ = false;
     lbm::release_moving_nodes(*solver_);
@@ -307,7 +296,7 @@ void FixLbmPore::post_force(int) {
       for (int a = 0; a < 3; ++a) f[i][a] += load.buoyancy[a];
   }
   if (!options_.lubrication || !list_) return;
-  const double start = MPI_Wtime();
+  const coupling::RunTimer::Scope timed(timer_, coupling::RunTimer::kLubrication);
   collect_group_pairs();
   const auto view = atoms_view();
   // The per-atom output gets the lubrication too: what it added to f (owned atoms).
@@ -320,13 +309,13 @@ void FixLbmPore::post_force(int) {
   lubrication_->add_wall_forces(view, wall_of, f[0]);
   for (int i = 0; i < atom->nlocal; ++i)
     for (int a = 0; a < 3; ++a) hydrodynamic_force_[i][a] += f[i][a] - lubrication_before_[3 * i + a];
-  timer_.add(coupling::RunTimer::kLubrication, MPI_Wtime() - start);
 }
 
 // The nearest wall of every owned particle, within the lubrication reach plus the farthest a
 // particle may move in a fluid step; followed along its normal until the next fluid step.
 void FixLbmPore::find_walls() {
   if (!options_.lubrication) return;
+  const coupling::RunTimer::Scope timed(timer_, coupling::RunTimer::kLubrication);
   const double reach = (options_.lubrication_cutoff + coupling::kMaxShiftPerFluidStep) * options_.dx;
   for (int i = 0; i < atom->nlocal; ++i) {
     auto& wall = own_state(i).wall;
@@ -344,75 +333,41 @@ void FixLbmPore::end_of_step() {
   fluid_step();
 }
 
-// Lattice-unit copies of the group's owned atoms and ghosts. The fluid sees each sphere move
-// with the velocity coupling::wall_velocity_of_steps makes of its mean velocities over the
-// last fluid steps (x - x_previous) / dt_lbm, the velocities of the mapping's motion (the
-// instantaneous velocity of a particle in a stiff contact oscillates within the substeps, and
-// sampling it once per fluid step feeds that noise into the fluid); that header says why two
-// steps. `advance` is false at setup, where no step has passed.
+// Lattice-unit copies of the group's owned atoms and ghosts, with the velocity the fluid
+// sees each sphere move with (coupling::StepMotion, from its displacements over the last
+// fluid steps). `advance` is false at setup, where no step has passed.
 void FixLbmPore::gather_particles(bool advance) {
-  double** x = atom->x;
-  double** v = atom->v;
-  const double dt_lbm = units_->dt_lbm();
+  const auto minimum_image = [&](double* d) { domain->minimum_image(d); };  // wrapped atoms
   for (int i = 0; i < atom->nlocal; ++i) {
     auto& s = own_state(i);
-    if (advance && s.has_step_position) {
-      double d[3] = {x[i][0] - s.step_position[0], x[i][1] - s.step_position[1], x[i][2] - s.step_position[2]};
-      domain->minimum_image(d);  // an atom wrapped through a periodic face
-      const coupling::Vec3 step_velocity{d[0] / dt_lbm, d[1] / dt_lbm, d[2] / dt_lbm};
-      s.fluid_velocity = coupling::wall_velocity_of_steps(
-          step_velocity, s.has_last_step_velocity ? &s.last_step_velocity : nullptr);
-      s.last_step_velocity = step_velocity;
-      s.has_last_step_velocity = true;
-    } else {
-      for (int a = 0; a < 3; ++a) s.fluid_velocity[a] = v[i][a];
-    }
-    s.step_position = {x[i][0], x[i][1], x[i][2]};
-    s.has_step_position = true;
+    s.fluid_velocity = s.motion.step(atom->x[i], atom->v[i], units_->dt_lbm(), advance, minimum_image);
   }
   comm->forward_comm_fix(this);
   fluid_velocity_rows_.resize(atom->nlocal + atom->nghost);
   for (int i = 0; i < atom->nlocal + atom->nghost; ++i) fluid_velocity_rows_[i] = state_[i].fluid_velocity.data();
-  lbm_pore::AtomArrays atoms;
-  atoms.nlocal = atom->nlocal;
-  atoms.nghost = atom->nghost;
-  atoms.mask = atom->mask;
-  atoms.groupbit = groupbit;
-  atoms.tag = atom->tag;
-  atoms.x = atom->x;
-  atoms.v = fluid_velocity_rows_.data();
-  atoms.omega = atom->omega_flag && options_.rotation ? atom->omega : nullptr;
-  atoms.radius = atom->radius;
-  particles_.gather(atoms, *frame_, dt_lbm);
+  double** omega = atom->omega_flag && options_.rotation ? atom->omega : nullptr;
+  particles_.gather({atom->nlocal, atom->nghost, atom->mask, groupbit, atom->tag, atom->x,
+                     fluid_velocity_rows_.data(), omega, atom->radius},
+                    *frame_, *units_);
 }
 
 void FixLbmPore::fluid_step() {
-  const double start = MPI_Wtime();
-  gather_particles(true);
-  const double walls_start = MPI_Wtime();
-  find_walls();
-  const double walls_time = MPI_Wtime() - walls_start;
-  timer_.add(coupling::RunTimer::kLubrication, walls_time);
-  check_particle_speed();
-  // Without particles (and none left to unmap) the step is the pure fluid step: a scene pays
-  // only for what it uses.
-  long long count = static_cast<long long>(particles_.num_owned()) +
-                    static_cast<long long>(coupling_->mapping().moving_cells().size());
-  MPI_Allreduce(MPI_IN_PLACE, &count, 1, MPI_LONG_LONG, MPI_SUM, world);
-  if (count > 0) share_particle_reach();
-  if (count == 0) {
-    solver_->step();
-  } else {
-    coupling_->step(particles_.view());
-    monitor_->record_coupling_mass(
-        coupling_->last_surface_mass(),
-        coupling_->last_mass_change().net_over(solver_->parameters().rho0));
+  {
+    const coupling::RunTimer::Scope timed(timer_, coupling::RunTimer::kFluid);
+    gather_particles(true);
+    find_walls();
+    check_particle_speed();
+    const std::array<double, 3> ghost_cutoff{comm->cutghost[0], comm->cutghost[1], comm->cutghost[2]};
+    const bool coupled = coupling::advance_fluid(*coupling_, particles_.view(), ghost_cutoff, options_.dx,
+                                                 solver_->decomposition().comm) == coupling::FluidStep::kCoupled;
+    if (coupled)
+      monitor_->record_coupling_mass(coupling_->last_surface_mass(),
+                                     coupling_->last_mass_change().net_over(solver_->parameters().rho0));
+    store_loads(coupled);
+    ++fluid_steps_;
+    timer_.count_fluid_step();
   }
-  store_loads(count > 0);
-  ++fluid_steps_;
-  timer_.count_fluid_step();
-  timer_.add(coupling::RunTimer::kFluid, MPI_Wtime() - start - walls_time);
-  const double diagnostics_start = MPI_Wtime();
+  const coupling::RunTimer::Scope timed(timer_, coupling::RunTimer::kDiagnostics);
   // A full scan of the lattice costs a sizeable part of a step: the NaN/runaway guard runs
   // every kCheckEvery fluid steps (a blow-up takes many steps to reach the particles), the
   // fluid diagnostics only when thermo output asks for them.
@@ -422,19 +377,6 @@ void FixLbmPore::fluid_step() {
   record_fluid_step();
   if (vtk_ && fluid_steps_ % options_.vtk_every == 0)
     vtk_->write(*solver_, units_->time_to_physical(double(fluid_steps_)));
-  timer_.add(coupling::RunTimer::kDiagnostics, MPI_Wtime() - diagnostics_start);
-}
-
-// The halo carries the ghost moments only near the spheres when every rank's view holds each
-// sphere within its radius + 2.5 cells (SphereCoupling::set_particle_reach): LIGGGHTS's ghost
-// cutoff against the largest radius of the group, both in cells.
-void FixLbmPore::share_particle_reach() {
-  double largest = 0.0;
-  for (int i = 0; i < atom->nlocal; ++i)
-    if (atom->mask[i] & groupbit) largest = std::max(largest, atom->radius[i]);
-  MPI_Allreduce(MPI_IN_PLACE, &largest, 1, MPI_DOUBLE, MPI_MAX, world);
-  const double cutoff = std::min({comm->cutghost[0], comm->cutghost[1], comm->cutghost[2]});
-  coupling_->set_particle_reach(cutoff / options_.dx, largest / options_.dx);
 }
 
 // The loads of the step, in script units, onto the atoms they belong to; ghosts' shares go
@@ -444,10 +386,8 @@ void FixLbmPore::store_loads(bool coupled) {
   for (int i = 0; i < ntotal; ++i) coupling::SubstepLoadModel::start_fluid_step(state_[i].load, i < atom->nlocal);
   if (!coupled) return;  // pure fluid step: no loads
   const auto& loads = coupling_->loads();
-  const double force_unit = units_->force_unit();
-  const double torque_unit = units_->torque_to_physical(1.0);
-  // C converts lattice velocity to lattice force: force_unit * dt_lbm / dx per script velocity.
-  const double coefficient_unit = force_unit * units_->dt_lbm() / options_.dx;
+  const double force_unit = units_->force_unit(), torque_unit = units_->torque_unit();
+  const double coefficient_unit = units_->velocity_coefficient_unit();
   for (std::size_t p = 0; p < particles_.size(); ++p) {
     auto& load = state_[particles_.atom(p)].load;
     for (int a = 0; a < 3; ++a) {

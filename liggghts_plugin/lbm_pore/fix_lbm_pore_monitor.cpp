@@ -107,14 +107,8 @@ void FixLbmPore::record_particles() {
 void FixLbmPore::record_fluid_step() {
   const auto burst = monitor_->record_fluid_step(*solver_, fluid_steps_, update->ntimestep,
                                                  units_->time_to_physical(double(fluid_steps_)));
-  if (!burst || comm->me != 0) return;
-  char text[400];
-  std::snprintf(text, sizeof text,
-                "fix lbm/pore: erosive burst: the pressure loss fell from %.4g to %.4g P_out (%.0f %%) "
-                "within %g time units after step %lld; %lld deposited particles before, %lld after\n",
-                burst->peak_pressure, burst->pressure_after, 100.0 * burst->pressure_drop / burst->peak_pressure,
-                burst->duration, burst->step, burst->count_before, burst->count_after);
-  lbm_pore::print_to_screen_and_log(screen, logfile, text);
+  if (burst && comm->me == 0)
+    lbm_pore::print_to_screen_and_log(screen, logfile, ("fix lbm/pore: " + burst->announcement()).c_str());
 }
 
 double FixLbmPore::compute_array(int row, int column) {
@@ -132,5 +126,5 @@ void FixLbmPore::post_run() {
   // LIGGGHTS's input loop stops after this run on all of them.
   lbm_pore::take_stop_requests(world);
   if (comm->me != 0) return;
-  lbm_pore::print_to_screen_and_log(screen, logfile, timer_.report(MPI_Wtime(), coupling_->times(), &coupling_->halo_counts()).c_str());
+  lbm_pore::print_to_screen_and_log(screen, logfile, timer_.report(*coupling_).c_str());
 }

@@ -9,6 +9,7 @@
 
 #include "coupling/lattice_frame.h"
 #include "coupling/particle_view.h"
+#include "coupling/unit_conversion.h"
 
 namespace lbm_pore {
 
@@ -25,8 +26,8 @@ struct AtomArrays {
 
 class LatticeParticles {
  public:
-  // velocity_to_lattice: factor dt_lbm / dx; angular velocities scale with dt_lbm alone.
-  void gather(const AtomArrays& atoms, const coupling::LatticeFrame& frame, double dt_lbm);
+  // Positions through the frame, velocities, angular velocities and radii through the units.
+  void gather(const AtomArrays& atoms, const coupling::LatticeFrame& frame, const coupling::UnitConversion& units);
 
   coupling::ParticleView view() const;
   std::size_t size() const { return atom_.size(); }

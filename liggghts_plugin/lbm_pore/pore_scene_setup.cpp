@@ -12,6 +12,7 @@
 #include <string>
 #include <utility>
 
+#include "coupling/memory_estimate.h"
 #include "lbm/input_error.h"
 #include "lbm/memory_estimate.h"
 #include "lbm/pore_scene.h"
@@ -256,11 +257,9 @@ std::string setup_summary(const PoreOptions& o, const coupling::UnitConversion& 
   if (bytes_per_node > 0.0)
     std::snprintf(text + n, sizeof text - n,
                   "fix lbm/pore: memory %.0f bytes per lattice node (fluid %.0f, particle coupling %.0f)\n",
-                  bytes_per_node + coupling_bytes_per_node(threads), bytes_per_node,
-                  coupling_bytes_per_node(threads));
+                  bytes_per_node + coupling::coupling_bytes_per_node(threads), bytes_per_node,
+                  coupling::coupling_bytes_per_node(threads));
   return text;
 }
-
-double coupling_bytes_per_node(int threads) { return 8.0 + 36.0 * std::max(threads, 1) + 8.0 + 32.0; }
 
 }  // namespace lbm_pore

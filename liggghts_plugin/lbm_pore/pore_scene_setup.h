@@ -74,14 +74,10 @@ void check_neighbor_skin(const PoreOptions& options, double skin);
 
 // The lines printed at setup: lattice, time steps, tau, drive and its Mach number or
 // density difference, the moving-wall scheme and lubrication, and the memory per lattice
-// node (the fluid's, lbm::FluidSolver::bytes_per_node, plus coupling_bytes_per_node;
-// bytes_per_node 0: not printed).
+// node (the fluid's, lbm::FluidSolver::bytes_per_node, plus coupling::coupling_bytes_per_node
+// for `threads`; bytes_per_node 0: not printed).
 std::string setup_summary(const PoreOptions& options, const coupling::UnitConversion& units,
                           const std::array<int, 3>& dims, const lbm::FlowDrive& drive, double dt_dem,
                           double pore_diameter, double bytes_per_node, int threads = 1);
-// The coupling's per-node arrays, at most: sphere mapping 8 bytes, one moving-wall moment
-// cache table of 36 per OpenMP thread, and where a rank or periodic neighbour exists the
-// refill's ghost densities 8 and the ghost nodes' moments 32 (SphereCoupling).
-double coupling_bytes_per_node(int threads);
 
 }  // namespace lbm_pore

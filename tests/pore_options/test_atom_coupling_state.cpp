@@ -15,13 +15,14 @@ AtomCouplingState numbered() {
   double v = 1.0;
   auto next = [&] { return v += 1.0; };
   for (auto* vec : {&s.load.force, &s.load.torque, &s.load.step_velocity, &s.load.previous_force,
-                    &s.load.previous_velocity, &s.step_position, &s.fluid_velocity, &s.wall.normal,
-                    &s.wall.searched_from})
+                    &s.load.previous_velocity, &s.motion.position, &s.fluid_velocity, &s.wall.normal,
+                    &s.wall.searched_from, &s.motion.last_velocity})
     for (double& x : *vec) x = next();
   s.load.coefficient = next();
   s.tag = 42.0;
   s.wall.distance = next();
-  s.has_step_position = true;
+  s.motion.has_position = true;
+  s.motion.has_last_velocity = true;
   s.wall.known = true;
   return s;
 }
@@ -30,7 +31,9 @@ bool same(const AtomCouplingState& a, const AtomCouplingState& b) {
   return a.load.force == b.load.force && a.load.torque == b.load.torque &&
          a.load.coefficient == b.load.coefficient && a.load.step_velocity == b.load.step_velocity &&
          a.load.previous_force == b.load.previous_force && a.load.previous_velocity == b.load.previous_velocity &&
-         a.step_position == b.step_position && a.has_step_position == b.has_step_position &&
+         a.motion.position == b.motion.position && a.motion.has_position == b.motion.has_position &&
+         a.motion.last_velocity == b.motion.last_velocity &&
+         a.motion.has_last_velocity == b.motion.has_last_velocity &&
          a.fluid_velocity == b.fluid_velocity && a.tag == b.tag && a.wall.known == b.wall.known &&
          a.wall.distance == b.wall.distance && a.wall.normal == b.wall.normal &&
          a.wall.searched_from == b.wall.searched_from;
@@ -48,8 +51,8 @@ TEST(AtomCouplingState, EveryFieldSurvivesTheFlatBuffer) {
   // All values distinct: a field packed twice or not at all would show.
   std::vector<double> sorted(buffer.begin(), buffer.end() - 1);
   std::sort(sorted.begin(), sorted.end());
-  EXPECT_EQ(std::unique(sorted.begin(), sorted.end()) - sorted.begin(), AtomCouplingState::kDoubles - 1)
-      << "only the two flags share the value 1";
+  EXPECT_EQ(std::unique(sorted.begin(), sorted.end()) - sorted.begin(), AtomCouplingState::kDoubles - 2)
+      << "only the three flags share the value 1";
 }
 
 TEST(AtomCouplingState, ReverseCommunicationSumsTheForceTorqueAndCoefficient) {
