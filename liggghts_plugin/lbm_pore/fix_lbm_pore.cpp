@@ -1,10 +1,5 @@
 #include "fix_lbm_pore.h"
 
-#include <mpi.h>
-
-#include <algorithm>
-#include <cmath>
-#include <cstdio>
 #include <cstring>
 
 #include "atom.h"
@@ -97,27 +92,18 @@ void FixLbmPore::post_integrate() {
 void FixLbmPore::init() {
   try {
     auto units = std::make_unique<coupling::UnitConversion>(lbm_pore::unit_inputs(options_, update->dt));
-    if (solver_ && std::abs(units->tau() - units_->tau()) > 1e-12)
-      throw lbm::InputError("the DEM time step or n_dem changed between runs (tau " +
-                            std::to_string(units_->tau()) + " -> " + std::to_string(units->tau()) +
-                            "); the fluid's relaxation time is fixed once the lattice exists");
-    if (!solver_) {
-      units_ = std::move(units);
-      build_lattice();
-    }
+    if (solver_)
+      units_->check_same_tau(*units);
+    else
+      build_lattice(std::move(units));
     lbm_pore::check_neighbor_skin(options_, neighbor->skin);
   } catch (...) {
     lbm_pore::report_current_exception(error, "fix lbm/pore", lbm_pore::ErrorScope::kAllRanks);
   }
   if (!resume_checkpoint_.empty()) {
     // Each rank reads its own file: one missing or truncated file must stop every rank.
-    std::string failure;
-    try {
-      lbm::read_checkpoint(*solver_, resume_checkpoint_);
-    } catch (const lbm::InputError& e) {
-      failure = e.what();
-    }
-    failure = lbm_pore::first_error_of_ranks(world, failure);
+    const std::string failure =
+        lbm_pore::try_on_every_rank(world, [&] { lbm::read_checkpoint(*solver_, resume_checkpoint_); });
     if (!failure.empty()) error->all(FLERR, ("fix lbm/pore: restart: " + failure).c_str());
     fluid_steps_ = solver_->time_step();
     resumed_ = true;
@@ -147,25 +133,18 @@ void FixLbmPore::init() {
 
 void FixLbmPore::init_list(int, NeighList* list) { list_ = list; }
 
-// Buoyancy needs fix gravity's acceleration (coupling/force/substep_load.h).
-void FixLbmPore::find_gravity() {
-  has_gravity_ = false;
-  gravity_ = {0.0, 0.0, 0.0};
+// Buoyancy needs fix gravity's acceleration (coupling/force/substep_load.h): the sum over the
+// fix gravity of the script, none without one.
+std::optional<coupling::Vec3> FixLbmPore::find_gravity() const {
+  std::optional<coupling::Vec3> gravity;
   for (int i = 0; i < modify->nfix; ++i) {
     if (std::strcmp(modify->fix[i]->style, "gravity") != 0) continue;
     double g[3];
     static_cast<FixGravity*>(modify->fix[i])->get_gravity(g);
-    for (int a = 0; a < 3; ++a) gravity_[a] += g[a];
-    has_gravity_ = true;
+    if (!gravity) gravity = coupling::Vec3{0.0, 0.0, 0.0};
+    for (int a = 0; a < 3; ++a) (*gravity)[a] += g[a];
   }
-  if (has_gravity_ && comm->me == 0) {
-    char text[300];
-    std::snprintf(text, sizeof text,
-                  "fix lbm/pore: fix gravity found: buoyancy -rho V g added to each particle, "
-                  "g = (%g, %g, %g)\n",
-                  gravity_[0], gravity_[1], gravity_[2]);
-    lbm_pore::print_to_screen_and_log(screen, logfile, text);
-  }
+  return gravity;
 }
 
 void FixLbmPore::build_geometry() {
@@ -177,11 +156,10 @@ void FixLbmPore::build_geometry() {
 
 // Builds the lattice frame and the fluid solver on LIGGGHTS's own subdomains (each rank
 // owns the nodes inside its subdomain), and the coupling objects that work on them.
-void FixLbmPore::build_lattice() {
-  frame_ = std::make_unique<coupling::LatticeFrame>();
-  frame_->dx = options_.dx;
-  frame_->dims = geometry_->dims();
-  frame_->origin = geometry_->origin();
+void FixLbmPore::build_lattice(std::unique_ptr<coupling::UnitConversion> units) {
+  units_ = std::move(units);
+  frame_ = std::make_unique<coupling::LatticeFrame>(
+      coupling::LatticeFrame{geometry_->origin(), options_.dx, geometry_->dims()});
   frame_->check_fills_box(domain->boxlo, domain->boxhi, domain->periodicity);
   lbm_pore::check_boundaries(options_, domain->periodicity);
   const lbm::FluidParameters p = lbm_pore::fluid_parameters(options_, *units_);
@@ -192,15 +170,9 @@ void FixLbmPore::build_lattice() {
   // Collective: every rank refuses together a lattice that does not fit (size and memory named).
   lbm_pore::check_lattice_memory(options_, decomposition.owned, geometry_->dims(), lbm::Communicator(world));
   solver_ = std::make_unique<lbm::FluidSolver>(*geometry_, p, drive, decomposition);
-
-  coupling::SphereCouplingOptions co;
-  co.wall_scheme = lbm::moving_wall::parse(options_.boundary);
-  co.conserve_link_mass = options_.mass_correction;
-  coupling_ = std::make_unique<coupling::SphereCoupling>(*solver_, co);
+  coupling_ = std::make_unique<coupling::SphereCoupling>(*solver_, lbm_pore::coupling_options(options_));
   lubrication_ = std::make_unique<coupling::LubricationKernel>(lbm_pore::lubrication_kernel(options_, *units_));
-  monitor_setup_.criteria.speed_threshold = lbm_pore::deposit_speed_threshold(options_, *units_, drive);
-  monitor_setup_.bursts = lbm_pore::burst_criteria(options_, *units_);
-  monitor_setup_.burst_min_deposited = options_.burst_deposits;
+  lbm_pore::set_monitor_criteria(monitor_setup_, options_, *units_, drive);
   const std::string warning = lbm::drive_accuracy_warning(drive);
   if (!warning.empty() && comm->me == 0) error->warning(FLERR, ("fix lbm/pore: pressure_loss: " + warning).c_str());
   monitor_ = std::make_unique<coupling::PoreMonitor>(monitor_setup_, *units_);
@@ -226,13 +198,11 @@ void FixLbmPore::build_lattice() {
 
 void FixLbmPore::setup(int vflag) {
   // After every fix's init(): fix gravity sets its acceleration there.
-  find_gravity();
-  coupling::SubstepLoadParameters lp;
-  lp.dt_fluid = units_->dt_lbm();
-  lp.buoyancy = has_gravity_;
-  lp.fluid_density = options_.rho;
-  lp.gravity = gravity_;
-  load_model_ = std::make_unique<coupling::SubstepLoadModel>(lp);
+  const std::optional<coupling::Vec3> gravity = find_gravity();
+  if (gravity && comm->me == 0)
+    lbm_pore::print_to_screen_and_log(screen, logfile, lbm_pore::buoyancy_summary(*gravity).c_str());
+  load_model_ = std::make_unique<coupling::SubstepLoadModel>(
+      lbm_pore::substep_load_parameters(options_, *units_, gravity ? &*gravity : nullptr));
   pairs_step_ = -1;  // the neighbour list was rebuilt (atoms may have been re-sorted)
   timer_.start();
   if (resumed_) {
@@ -268,47 +238,22 @@ void FixLbmPore::collect_group_pairs() {
   }
 }
 
-coupling::ParticleView FixLbmPore::atoms_view() const {
-  coupling::ParticleView view;
-  view.num_owned = atom->nlocal;
-  view.num_total = atom->nlocal + atom->nghost;
-  view.position = atom->x[0];
-  view.velocity = atom->v[0];
-  view.radius = atom->radius;
-  return view;
+lbm_pore::AtomArrays FixLbmPore::atom_arrays() const {
+  double** omega = atom->omega_flag && options_.rotation ? atom->omega : nullptr;
+  return {atom->nlocal, atom->nghost, atom->mask, groupbit, atom->tag, atom->x, atom->v, omega, atom->radius};
 }
 
 // Every DEM substep: the substep load model's force and torque (the load of the last fluid
 // step), buoyancy, and the lubrication correction that follows the particles.
 void FixLbmPore::post_force(int) {
-  double** f = atom->f;
-  double** v = atom->v;
-  double** torque = atom->torque;
-  for (int i = 0; i < atom->nlocal; ++i) {
-    hydrodynamic_force_[i][0] = hydrodynamic_force_[i][1] = hydrodynamic_force_[i][2] = 0.0;
-    if (!(atom->mask[i] & groupbit)) continue;
-    const auto load = load_model_->at_substep(own_state(i).load, {v[i][0], v[i][1], v[i][2]}, atom->radius[i]);
-    for (int a = 0; a < 3; ++a) f[i][a] += load.hydrodynamic[a];
-    for (int a = 0; a < 3; ++a) hydrodynamic_force_[i][a] = load.hydrodynamic[a];
-    if (torque && options_.rotation)
-      for (int a = 0; a < 3; ++a) torque[i][a] += load.torque[a];
-    if (has_gravity_)
-      for (int a = 0; a < 3; ++a) f[i][a] += load.buoyancy[a];
-  }
+  const lbm_pore::AtomArrays atoms = atom_arrays();
+  states_.add_substep_loads(*load_model_, atoms, atom->f, options_.rotation ? atom->torque : nullptr,
+                            load_model_->parameters().buoyancy, hydrodynamic_force_);
   if (!options_.lubrication || !list_) return;
   const coupling::RunTimer::Scope timed(timer_, coupling::RunTimer::kLubrication);
   collect_group_pairs();
-  const auto view = atoms_view();
   // The per-atom output gets the lubrication too: what it added to f (owned atoms).
-  lubrication_before_.assign(f[0], f[0] + 3 * atom->nlocal);
-  lubrication_->add_pair_forces(view, pairs_, f[0]);
-  static const coupling::NearestWall kNoWall;
-  const auto wall_of = [&](std::size_t i) -> const coupling::NearestWall& {
-    return (atom->mask[i] & groupbit) ? state_[i].wall : kNoWall;
-  };
-  lubrication_->add_wall_forces(view, wall_of, f[0]);
-  for (int i = 0; i < atom->nlocal; ++i)
-    for (int a = 0; a < 3; ++a) hydrodynamic_force_[i][a] += f[i][a] - lubrication_before_[3 * i + a];
+  states_.add_lubrication(*lubrication_, atoms, pairs_, atom->f, hydrodynamic_force_);
 }
 
 // The nearest wall of every owned particle, within the lubrication reach plus the farthest a
@@ -317,38 +262,21 @@ void FixLbmPore::find_walls() {
   if (!options_.lubrication) return;
   const coupling::RunTimer::Scope timed(timer_, coupling::RunTimer::kLubrication);
   const double reach = (options_.lubrication_cutoff + coupling::kMaxShiftPerFluidStep) * options_.dx;
-  for (int i = 0; i < atom->nlocal; ++i) {
-    auto& wall = own_state(i).wall;
-    if (!(atom->mask[i] & groupbit)) {
-      wall.known = false;
-      continue;
-    }
-    const double* x = atom->x[i];
-    wall = coupling::find_nearest_wall(*surface_, {x[0], x[1], x[2]}, atom->radius[i] + reach, wall_points_);
-  }
+  states_.find_walls(atom_arrays(), *surface_, reach, wall_points_);
 }
 
 void FixLbmPore::end_of_step() {
-  if (update->ntimestep % options_.n_dem != 0) return;
-  fluid_step();
+  if (update->ntimestep % options_.n_dem == 0) fluid_step();
 }
 
 // Lattice-unit copies of the group's owned atoms and ghosts, with the velocity the fluid
 // sees each sphere move with (coupling::StepMotion, from its displacements over the last
 // fluid steps). `advance` is false at setup, where no step has passed.
 void FixLbmPore::gather_particles(bool advance) {
-  const auto minimum_image = [&](double* d) { domain->minimum_image(d); };  // wrapped atoms
-  for (int i = 0; i < atom->nlocal; ++i) {
-    auto& s = own_state(i);
-    s.fluid_velocity = s.motion.step(atom->x[i], atom->v[i], units_->dt_lbm(), advance, minimum_image);
-  }
-  comm->forward_comm_fix(this);
-  fluid_velocity_rows_.resize(atom->nlocal + atom->nghost);
-  for (int i = 0; i < atom->nlocal + atom->nghost; ++i) fluid_velocity_rows_[i] = state_[i].fluid_velocity.data();
-  double** omega = atom->omega_flag && options_.rotation ? atom->omega : nullptr;
-  particles_.gather({atom->nlocal, atom->nghost, atom->mask, groupbit, atom->tag, atom->x,
-                     fluid_velocity_rows_.data(), omega, atom->radius},
-                    *frame_, *units_);
+  const lbm_pore::AtomArrays atoms = atom_arrays();
+  states_.step_motion(atoms, units_->dt_lbm(), advance, [&](double* d) { domain->minimum_image(d); });
+  comm->forward_comm_fix(this);  // to the ghosts
+  particles_.gather(states_.seen_by_fluid(atoms), *frame_, *units_);
 }
 
 void FixLbmPore::fluid_step() {
@@ -357,8 +285,7 @@ void FixLbmPore::fluid_step() {
     gather_particles(true);
     find_walls();
     check_particle_speed();
-    const std::array<double, 3> ghost_cutoff{comm->cutghost[0], comm->cutghost[1], comm->cutghost[2]};
-    const bool coupled = coupling::advance_fluid(*coupling_, particles_.view(), ghost_cutoff, options_.dx,
+    const bool coupled = coupling::advance_fluid(*coupling_, particles_.view(), comm->cutghost, options_.dx,
                                                  solver_->decomposition().comm) == coupling::FluidStep::kCoupled;
     if (coupled)
       monitor_->record_coupling_mass(coupling_->last_surface_mass(),
@@ -382,24 +309,11 @@ void FixLbmPore::fluid_step() {
 // The loads of the step, in script units, onto the atoms they belong to; ghosts' shares go
 // back to their owners (LIGGGHTS reverse communication, which also folds periodic images).
 void FixLbmPore::store_loads(bool coupled) {
-  const int ntotal = atom->nlocal + atom->nghost;
-  for (int i = 0; i < ntotal; ++i) coupling::SubstepLoadModel::start_fluid_step(state_[i].load, i < atom->nlocal);
+  states_.start_fluid_step(atom->nlocal, atom->nlocal + atom->nghost);
   if (!coupled) return;  // pure fluid step: no loads
-  const auto& loads = coupling_->loads();
-  const double force_unit = units_->force_unit(), torque_unit = units_->torque_unit();
-  const double coefficient_unit = units_->velocity_coefficient_unit();
-  for (std::size_t p = 0; p < particles_.size(); ++p) {
-    auto& load = state_[particles_.atom(p)].load;
-    for (int a = 0; a < 3; ++a) {
-      load.force[a] = loads.force[p][a] * force_unit;
-      load.torque[a] = loads.torque[p][a] * torque_unit;
-    }
-    load.coefficient = loads.velocity_coefficient[p] * coefficient_unit;
-  }
+  states_.store_loads(particles_, coupling_->loads(), *units_);
   comm->reverse_comm_fix(this);
-  double** v = atom->v;
-  for (int i = 0; i < atom->nlocal; ++i)
-    load_model_->finish_fluid_step(state_[i].load, {v[i][0], v[i][1], v[i][2]}, atom->rmass ? atom->rmass[i] : 0.0);
+  states_.finish_fluid_step(*load_model_, atom_arrays(), atom->rmass);
 }
 
 const coupling::LatticeFrame& FixLbmPore::frame() const { return *frame_; }

@@ -32,6 +32,16 @@ void LatticeParticles::gather(const AtomArrays& atoms, const coupling::LatticeFr
     if (in_group(i)) add(i);
 }
 
+coupling::ParticleView host_view(const AtomArrays& atoms) {
+  coupling::ParticleView view;
+  view.num_owned = static_cast<std::size_t>(atoms.nlocal);
+  view.num_total = static_cast<std::size_t>(atoms.nlocal + atoms.nghost);
+  view.position = atoms.x[0];
+  view.velocity = atoms.v[0];
+  view.radius = atoms.radius;
+  return view;
+}
+
 coupling::ParticleView LatticeParticles::view() const {
   coupling::ParticleView view;
   view.num_owned = num_owned_;

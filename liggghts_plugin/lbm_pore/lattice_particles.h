@@ -24,6 +24,11 @@ struct AtomArrays {
   const double* radius = nullptr;
 };
 
+// The atoms as they are, in host units, over the host's own arrays (x and v as contiguous
+// rows, as LIGGGHTS allocates them), for the kernels that work in host units (lubrication,
+// bonds). Owned atoms and ghosts, the group's or not.
+coupling::ParticleView host_view(const AtomArrays& atoms);
+
 class LatticeParticles {
  public:
   // Positions through the frame, velocities, angular velocities and radii through the units.

@@ -187,6 +187,38 @@ coupling::BurstCriteria burst_criteria(const PoreOptions& o, const coupling::Uni
   return criteria;
 }
 
+void set_monitor_criteria(coupling::PoreMonitorSetup& setup, const PoreOptions& o,
+                          const coupling::UnitConversion& units, const lbm::FlowDrive& drive) {
+  setup.criteria.speed_threshold = deposit_speed_threshold(o, units, drive);
+  setup.bursts = burst_criteria(o, units);
+  setup.burst_min_deposited = o.burst_deposits;
+}
+
+coupling::SphereCouplingOptions coupling_options(const PoreOptions& o) {
+  coupling::SphereCouplingOptions co;
+  co.wall_scheme = lbm::moving_wall::parse(o.boundary);
+  co.conserve_link_mass = o.mass_correction;
+  return co;
+}
+
+coupling::SubstepLoadParameters substep_load_parameters(const PoreOptions& o, const coupling::UnitConversion& units,
+                                                        const coupling::Vec3* gravity) {
+  coupling::SubstepLoadParameters lp;
+  lp.dt_fluid = units.dt_lbm();
+  lp.buoyancy = gravity != nullptr;
+  lp.fluid_density = o.rho;
+  if (gravity) lp.gravity = *gravity;
+  return lp;
+}
+
+std::string buoyancy_summary(const coupling::Vec3& g) {
+  char text[300];
+  std::snprintf(text, sizeof text,
+                "fix lbm/pore: fix gravity found: buoyancy -rho V g added to each particle, g = (%g, %g, %g)\n",
+                g[0], g[1], g[2]);
+  return text;
+}
+
 coupling::BurstUnits burst_units(const std::string& unit_style) {
   coupling::BurstUnits units;
   units.pressure = "P_out";

@@ -7,7 +7,9 @@
 #include <string>
 
 #include "coupling/diagnostics/pore_monitor.h"
+#include "coupling/force/substep_load.h"
 #include "coupling/lubrication/lubrication_kernel.h"
+#include "coupling/sphere_coupling.h"
 #include "coupling/unit_conversion.h"
 #include "lbm/block_layout.h"
 #include "lbm/communicator.h"
@@ -55,6 +57,21 @@ double deposit_speed_threshold(const PoreOptions& options, const coupling::UnitC
 
 // The burst detector's criteria: burst_drop, and burst_window in fluid steps (default 1000).
 coupling::BurstCriteria burst_criteria(const PoreOptions& options, const coupling::UnitConversion& units);
+
+// The monitor's criteria, once the drive is known, set in the scene's `setup`: the deposit
+// speed threshold (deposit_speed_threshold), the burst criteria and 'burst_deposits'.
+void set_monitor_criteria(coupling::PoreMonitorSetup& setup, const PoreOptions& options,
+                          const coupling::UnitConversion& units, const lbm::FlowDrive& drive);
+
+// The sphere coupling's moving-wall scheme ('boundary') and link mass correction.
+coupling::SphereCouplingOptions coupling_options(const PoreOptions& options);
+
+// The substep load model's parameters: the fluid step, and buoyancy in the fluid's density
+// where the script has gravity (`gravity`: its acceleration, null without).
+coupling::SubstepLoadParameters substep_load_parameters(const PoreOptions& options, const coupling::UnitConversion& units,
+                                                        const coupling::Vec3* gravity);
+// The line printed when buoyancy is on, with the acceleration it uses.
+std::string buoyancy_summary(const coupling::Vec3& gravity);
 
 // Unit names for the burst file's header, from LIGGGHTS's unit style (pressures in P_out).
 coupling::BurstUnits burst_units(const std::string& unit_style);

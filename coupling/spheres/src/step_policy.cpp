@@ -12,7 +12,7 @@ FluidStep choose_fluid_step(const SphereCoupling& coupling, const ParticleView& 
   return count > 0 ? FluidStep::kCoupled : FluidStep::kPure;
 }
 
-ParticleReach particle_reach(const ParticleView& view, const std::array<double, 3>& ghost_cutoff,
+ParticleReach particle_reach(const ParticleView& view, const double* ghost_cutoff,
                              double dx, const lbm::Communicator& comm) {
   double largest = 0.0;
   for (std::size_t p = 0; p < view.num_owned; ++p) largest = std::max(largest, view.r(p));
@@ -22,7 +22,7 @@ ParticleReach particle_reach(const ParticleView& view, const std::array<double, 
 }
 
 FluidStep advance_fluid(SphereCoupling& coupling, const ParticleView& view,
-                        const std::array<double, 3>& ghost_cutoff, double dx, const lbm::Communicator& comm) {
+                        const double* ghost_cutoff, double dx, const lbm::Communicator& comm) {
   const FluidStep step = choose_fluid_step(coupling, view, comm);
   if (step == FluidStep::kPure) {
     coupling.solver().step();

@@ -60,6 +60,10 @@ class UnitConversion {
   // A one-line summary for the setup printout (tau, nu, time steps).
   std::string summary() const;
 
+  // The fluid's relaxation time is fixed once its lattice exists: throws lbm::InputError
+  // when `later` (a later run's time step or n_dem) gives another tau than this.
+  void check_same_tau(const UnitConversion& later) const;
+
  private:
   UnitInputs in_;
   double dt_lbm_ = 1.0, nu_lattice_ = 1.0 / 6.0, tau_ = 1.0;
