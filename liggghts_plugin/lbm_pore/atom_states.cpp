@@ -116,6 +116,16 @@ void AtomStates::finish_fluid_step(const coupling::SubstepLoadModel& model, cons
   }
 }
 
+int AtomStates::pack_exchange(int i, double* buf) const {
+  (*this)[i].pack(buf);
+  return AtomCouplingState::kDoubles;
+}
+
+int AtomStates::unpack_exchange(int i, const double* buf) {
+  (*this)[i].unpack(buf);
+  return AtomCouplingState::kDoubles;
+}
+
 int AtomStates::pack_restart(int i, double* buf) const {
   buf[0] = kRestart;
   (*this)[i].pack(buf + 1);

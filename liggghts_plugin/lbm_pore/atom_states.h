@@ -92,6 +92,10 @@ class AtomStates {
   int pack_reverse(int n, int first, double* buf) const;
   void unpack_reverse(int n, const int* list, const double* buf);
 
+  // Exchange of an atom between ranks: its state alone (AtomCouplingState::kDoubles).
+  int pack_exchange(int i, double* buf) const;
+  int unpack_exchange(int i, const double* buf);
+
   // Restart files, per atom: the entry's size (kRestart) first, then the state. An entry of
   // the previous layout (AtomCouplingState::kDoubles1) reads too; unpack_restart returns
   // false, and reads nothing, for any other size.

@@ -16,7 +16,6 @@
 #include "update.h"
 
 using namespace LAMMPS_NS;
-using lbm_pore::AtomCouplingState;
 
 // Restart: the particles travel in LIGGGHTS's restart file with their state; the fluid goes
 // to a companion checkpoint (one file per rank) whose path the restart file keeps, after the
@@ -62,16 +61,8 @@ void FixLbmPore::copy_arrays(int i, int j, int) {
   for (int a = 0; a < 3; ++a) hydrodynamic_force_[j][a] = hydrodynamic_force_[i][a];
 }
 
-int FixLbmPore::pack_exchange(int i, double* buf) {
-  states_[i].pack(buf);
-  return AtomCouplingState::kDoubles;
-}
-
-int FixLbmPore::unpack_exchange(int nlocal, double* buf) {
-  states_[nlocal].unpack(buf);
-  return AtomCouplingState::kDoubles;
-}
-
+int FixLbmPore::pack_exchange(int i, double* buf) { return states_.pack_exchange(i, buf); }
+int FixLbmPore::unpack_exchange(int nlocal, double* buf) { return states_.unpack_exchange(nlocal, buf); }
 int FixLbmPore::pack_restart(int i, double* buf) { return states_.pack_restart(i, buf); }
 
 void FixLbmPore::unpack_restart(int nlocal, int nth) {

@@ -112,7 +112,7 @@ TEST(AtomStates, LoadsComeBackInScriptUnitsAndGhostSharesSumOntoTheirOwners) {
   EXPECT_EQ(states[0].load.coefficient, 3.0 * u.velocity_coefficient_unit() + 1.0 * u.velocity_coefficient_unit());
 }
 
-TEST(AtomStates, RestartEntriesOfBothLayoutsReadAndAForeignOneIsRefused) {
+TEST(AtomStates, RestartEntriesOfBothLayoutsReadAForeignOneIsRefusedAndExchangeMovesTheState) {
   AtomStates states;
   states.resize(2);
   states.reset(0, 7.0);
@@ -131,6 +131,13 @@ TEST(AtomStates, RestartEntriesOfBothLayoutsReadAndAForeignOneIsRefused) {
   entry[0] = 12.0;
   EXPECT_FALSE(states.unpack_restart(1, entry.data()));
   EXPECT_EQ(states[1].tag, 7.0);  // untouched
+  // Exchange: the state alone, no size.
+  std::vector<double> moved(AtomCouplingState::kDoubles);
+  EXPECT_EQ(states.pack_exchange(0, moved.data()), AtomCouplingState::kDoubles);
+  states.reset(1, 8.0);
+  EXPECT_EQ(states.unpack_exchange(1, moved.data()), AtomCouplingState::kDoubles);
+  EXPECT_EQ(states[1].tag, 7.0);
+  EXPECT_TRUE(states[1].motion.has_last_velocity);
 }
 
 TEST(RestartRecord, TheMonitorStateAndTheCheckpointPathRoundTrip) {
