@@ -57,6 +57,12 @@ void Communicator::max(double* values, int count) const {
   if (mpi_active()) MPI_Allreduce(MPI_IN_PLACE, values, count, MPI_DOUBLE, MPI_MAX, comm_);
 }
 
+Communicator::Location Communicator::max_location(double value) const {
+  Location local{value, rank()}, global = local;
+  if (mpi_active()) MPI_Allreduce(&local, &global, 1, MPI_DOUBLE_INT, MPI_MAXLOC, comm_);
+  return global;
+}
+
 void Communicator::sendrecv(const double* send, int send_count, int dest, double* recv,
                             int recv_count, int source, int tag) const {
   if (!mpi_active()) return serial_sendrecv(send, send_count, dest, recv, recv_count, source);
@@ -76,6 +82,7 @@ int Communicator::size() const { return 1; }
 void Communicator::sum(double*, int) const {}
 void Communicator::sum(long long*, int) const {}
 void Communicator::max(double*, int) const {}
+Communicator::Location Communicator::max_location(double value) const { return {value, 0}; }
 
 void Communicator::sendrecv(const double* send, int send_count, int dest, double* recv,
                             int recv_count, int source, int /*tag*/) const {

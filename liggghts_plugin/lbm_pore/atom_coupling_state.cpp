@@ -12,10 +12,10 @@ void visit_fields(AtomCouplingState& s, Visit visit) {
   for (double& v : s.load.step_velocity) visit(v);
   for (double& v : s.load.previous_force) visit(v);
   for (double& v : s.load.previous_velocity) visit(v);
-  for (double& v : s.step_position) visit(v);
-  double has = s.has_step_position ? 1.0 : 0.0;
+  for (double& v : s.motion.position) visit(v);
+  double has = s.motion.has_position ? 1.0 : 0.0;
   visit(has);
-  s.has_step_position = has > 0.0;
+  s.motion.has_position = has > 0.0;
   for (double& v : s.fluid_velocity) visit(v);
   visit(s.tag);
   for (double& v : s.wall.normal) visit(v);
@@ -25,10 +25,10 @@ void visit_fields(AtomCouplingState& s, Visit visit) {
   s.wall.known = known > 0.0;
   for (double& v : s.wall.searched_from) visit(v);
   // Fields added later go last: a shorter buffer of an earlier layout is a prefix.
-  for (double& v : s.last_step_velocity) visit(v);
-  double has_last = s.has_last_step_velocity ? 1.0 : 0.0;
+  for (double& v : s.motion.last_velocity) visit(v);
+  double has_last = s.motion.has_last_velocity ? 1.0 : 0.0;
   visit(has_last);
-  s.has_last_step_velocity = has_last > 0.0;
+  s.motion.has_last_velocity = has_last > 0.0;
 }
 }  // namespace
 

@@ -1,18 +1,13 @@
 #include "fix_lbm_pore.h"
 
-#include <mpi.h>
-
-#include <algorithm>
-#include <cmath>
-#include <cstdio>
 #include <cstring>
 
 #include "atom.h"
 #include "comm.h"
-#include "coupling/boundary/wall_velocity.h"
 #include "coupling/diagnostics/particle_probes.h"
 #include "coupling/lattice_frame.h"
 #include "coupling/sphere_coupling.h"
+#include "coupling/step_policy.h"
 #include "coupling/unit_conversion.h"
 #include "domain.h"
 #include "error.h"
@@ -38,13 +33,6 @@
 
 using namespace LAMMPS_NS;
 
-namespace {
-// Wraps a coupling/ or lbm/ error into LIGGGHTS's, naming the command once.
-std::string fix_message(const std::string& what) {
-  return what.rfind("fix lbm/pore", 0) == 0 ? what : "fix lbm/pore: " + what;
-}
-}  // namespace
-
 FixLbmPore::FixLbmPore(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg, arg) {
   lbm_pore::refuse_second_instance(modify, error, this);
   std::vector<std::string> words(arg + 3, arg + narg);
@@ -52,9 +40,7 @@ FixLbmPore::FixLbmPore(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg, arg) 
     options_ = lbm_pore::parse_pore_options(words);
     lbm_pore::check_output_paths(options_);
     build_geometry();
-  } catch (const lbm::InputError& e) {
-    error->all(FLERR, fix_message(e.what()).c_str());
-  } catch (...) {  // std::bad_alloc and the like, as a LIGGGHTS error
+  } catch (...) {  // lbm::InputError on every rank, std::bad_alloc and the like: a LIGGGHTS error
     lbm_pore::report_current_exception(error, "fix lbm/pore", lbm_pore::ErrorScope::kAllRanks);
   }
   if (!atom->radius_flag)
@@ -106,29 +92,18 @@ void FixLbmPore::post_integrate() {
 void FixLbmPore::init() {
   try {
     auto units = std::make_unique<coupling::UnitConversion>(lbm_pore::unit_inputs(options_, update->dt));
-    if (solver_ && std::abs(units->tau() - units_->tau()) > 1e-12)
-      throw lbm::InputError("the DEM time step or n_dem changed between runs (tau " +
-                            std::to_string(units_->tau()) + " -> " + std::to_string(units->tau()) +
-                            "); the fluid's relaxation time is fixed once the lattice exists");
-    if (!solver_) {
-      units_ = std::move(units);
-      build_lattice();
-    }
+    if (solver_)
+      units_->check_same_tau(*units);
+    else
+      build_lattice(std::move(units));
     lbm_pore::check_neighbor_skin(options_, neighbor->skin);
-  } catch (const lbm::InputError& e) {
-    error->all(FLERR, fix_message(e.what()).c_str());
   } catch (...) {
     lbm_pore::report_current_exception(error, "fix lbm/pore", lbm_pore::ErrorScope::kAllRanks);
   }
   if (!resume_checkpoint_.empty()) {
     // Each rank reads its own file: one missing or truncated file must stop every rank.
-    std::string failure;
-    try {
-      lbm::read_checkpoint(*solver_, resume_checkpoint_);
-    } catch (const lbm::InputError& e) {
-      failure = e.what();
-    }
-    failure = lbm_pore::first_error_of_ranks(world, failure);
+    const std::string failure =
+        lbm_pore::try_on_every_rank(world, [&] { lbm::read_checkpoint(*solver_, resume_checkpoint_); });
     if (!failure.empty()) error->all(FLERR, ("fix lbm/pore: restart: " + failure).c_str());
     fluid_steps_ = solver_->time_step();
     resumed_ = true;
@@ -158,25 +133,18 @@ void FixLbmPore::init() {
 
 void FixLbmPore::init_list(int, NeighList* list) { list_ = list; }
 
-// Buoyancy needs fix gravity's acceleration (coupling/force/substep_load.h).
-void FixLbmPore::find_gravity() {
-  has_gravity_ = false;
-  gravity_ = {0.0, 0.0, 0.0};
+// Buoyancy needs fix gravity's acceleration (coupling/force/substep_load.h): the sum over the
+// fix gravity of the script, none without one.
+std::optional<coupling::Vec3> FixLbmPore::find_gravity() const {
+  std::optional<coupling::Vec3> gravity;
   for (int i = 0; i < modify->nfix; ++i) {
     if (std::strcmp(modify->fix[i]->style, "gravity") != 0) continue;
     double g[3];
     static_cast<FixGravity*>(modify->fix[i])->get_gravity(g);
-    for (int a = 0; a < 3; ++a) gravity_[a] += g[a];
-    has_gravity_ = true;
+    if (!gravity) gravity = coupling::Vec3{0.0, 0.0, 0.0};
+    for (int a = 0; a < 3; ++a) (*gravity)[a] += g[a];
   }
-  if (has_gravity_ && comm->me == 0) {
-    char text[300];
-    std::snprintf(text, sizeof text,
-                  "fix lbm/pore: fix gravity found: buoyancy -rho V g added to each particle, "
-                  "g = (%g, %g, %g)\n",
-                  gravity_[0], gravity_[1], gravity_[2]);
-    lbm_pore::print_to_screen_and_log(screen, logfile, text);
-  }
+  return gravity;
 }
 
 void FixLbmPore::build_geometry() {
@@ -188,11 +156,10 @@ void FixLbmPore::build_geometry() {
 
 // Builds the lattice frame and the fluid solver on LIGGGHTS's own subdomains (each rank
 // owns the nodes inside its subdomain), and the coupling objects that work on them.
-void FixLbmPore::build_lattice() {
-  frame_ = std::make_unique<coupling::LatticeFrame>();
-  frame_->dx = options_.dx;
-  frame_->dims = geometry_->dims();
-  frame_->origin = geometry_->origin();
+void FixLbmPore::build_lattice(std::unique_ptr<coupling::UnitConversion> units) {
+  units_ = std::move(units);
+  frame_ = std::make_unique<coupling::LatticeFrame>(
+      coupling::LatticeFrame{geometry_->origin(), options_.dx, geometry_->dims()});
   frame_->check_fills_box(domain->boxlo, domain->boxhi, domain->periodicity);
   lbm_pore::check_boundaries(options_, domain->periodicity);
   const lbm::FluidParameters p = lbm_pore::fluid_parameters(options_, *units_);
@@ -203,12 +170,9 @@ void FixLbmPore::build_lattice() {
   // Collective: every rank refuses together a lattice that does not fit (size and memory named).
   lbm_pore::check_lattice_memory(options_, decomposition.owned, geometry_->dims(), lbm::Communicator(world));
   solver_ = std::make_unique<lbm::FluidSolver>(*geometry_, p, drive, decomposition);
-
   coupling_ = std::make_unique<coupling::SphereCoupling>(*solver_, lbm_pore::coupling_options(options_));
   lubrication_ = std::make_unique<coupling::LubricationKernel>(lbm_pore::lubrication_kernel(options_, *units_));
-  monitor_setup_.criteria.speed_threshold = lbm_pore::deposit_speed_threshold(options_, *units_, drive);
-  monitor_setup_.bursts = lbm_pore::burst_criteria(options_, *units_);
-  monitor_setup_.burst_min_deposited = options_.burst_deposits;
+  lbm_pore::set_monitor_criteria(monitor_setup_, options_, *units_, drive);
   const std::string warning = lbm::drive_accuracy_warning(drive);
   if (!warning.empty() && comm->me == 0) error->warning(FLERR, ("fix lbm/pore: pressure_loss: " + warning).c_str());
   monitor_ = std::make_unique<coupling::PoreMonitor>(monitor_setup_, *units_);
@@ -234,15 +198,13 @@ void FixLbmPore::build_lattice() {
 
 void FixLbmPore::setup(int vflag) {
   // After every fix's init(): fix gravity sets its acceleration there.
-  find_gravity();
-  coupling::SubstepLoadParameters lp;
-  lp.dt_fluid = units_->dt_lbm();
-  lp.buoyancy = has_gravity_;
-  lp.fluid_density = options_.rho;
-  lp.gravity = gravity_;
-  load_model_ = std::make_unique<coupling::SubstepLoadModel>(lp);
+  const std::optional<coupling::Vec3> gravity = find_gravity();
+  if (gravity && comm->me == 0)
+    lbm_pore::print_to_screen_and_log(screen, logfile, lbm_pore::buoyancy_summary(*gravity).c_str());
+  load_model_ = std::make_unique<coupling::SubstepLoadModel>(
+      lbm_pore::substep_load_parameters(options_, *units_, gravity ? &*gravity : nullptr));
   pairs_step_ = -1;  // the neighbour list was rebuilt (atoms may have been re-sorted)
-  timer_.start(MPI_Wtime());
+  timer_.start();
   if (resumed_) {
     resumed_ = false;
     lbm::release_moving_nodes(*solver_);
@@ -276,140 +238,63 @@ void FixLbmPore::collect_group_pairs() {
   }
 }
 
-coupling::ParticleView FixLbmPore::atoms_view() const {
-  coupling::ParticleView view;
-  view.num_owned = atom->nlocal;
-  view.num_total = atom->nlocal + atom->nghost;
-  view.position = atom->x[0];
-  view.velocity = atom->v[0];
-  view.radius = atom->radius;
-  return view;
+lbm_pore::AtomArrays FixLbmPore::atom_arrays() const {
+  double** omega = atom->omega_flag && options_.rotation ? atom->omega : nullptr;
+  return {atom->nlocal, atom->nghost, atom->mask, groupbit, atom->tag, atom->x, atom->v, omega, atom->radius};
 }
 
 // Every DEM substep: the substep load model's force and torque (the load of the last fluid
 // step), buoyancy, and the lubrication correction that follows the particles.
 void FixLbmPore::post_force(int) {
-  double** f = atom->f;
-  double** v = atom->v;
-  double** torque = atom->torque;
-  for (int i = 0; i < atom->nlocal; ++i) {
-    hydrodynamic_force_[i][0] = hydrodynamic_force_[i][1] = hydrodynamic_force_[i][2] = 0.0;
-    if (!(atom->mask[i] & groupbit)) continue;
-    const auto load = load_model_->at_substep(own_state(i).load, {v[i][0], v[i][1], v[i][2]}, atom->radius[i]);
-    for (int a = 0; a < 3; ++a) f[i][a] += load.hydrodynamic[a];
-    for (int a = 0; a < 3; ++a) hydrodynamic_force_[i][a] = load.hydrodynamic[a];
-    if (torque && options_.rotation)
-      for (int a = 0; a < 3; ++a) torque[i][a] += load.torque[a];
-    if (has_gravity_)
-      for (int a = 0; a < 3; ++a) f[i][a] += load.buoyancy[a];
-  }
+  const lbm_pore::AtomArrays atoms = atom_arrays();
+  states_.add_substep_loads(*load_model_, atoms, atom->f, options_.rotation ? atom->torque : nullptr,
+                            load_model_->parameters().buoyancy, hydrodynamic_force_);
   if (!options_.lubrication || !list_) return;
-  const double start = MPI_Wtime();
+  const coupling::RunTimer::Scope timed(timer_, coupling::RunTimer::kLubrication);
   collect_group_pairs();
-  const auto view = atoms_view();
   // The per-atom output gets the lubrication too: what it added to f (owned atoms).
-  lubrication_before_.assign(f[0], f[0] + 3 * atom->nlocal);
-  lubrication_->add_pair_forces(view, pairs_, f[0]);
-  static const coupling::NearestWall kNoWall;
-  const auto wall_of = [&](std::size_t i) -> const coupling::NearestWall& {
-    return (atom->mask[i] & groupbit) ? state_[i].wall : kNoWall;
-  };
-  lubrication_->add_wall_forces(view, wall_of, f[0]);
-  for (int i = 0; i < atom->nlocal; ++i)
-    for (int a = 0; a < 3; ++a) hydrodynamic_force_[i][a] += f[i][a] - lubrication_before_[3 * i + a];
-  timer_.add(coupling::RunTimer::kLubrication, MPI_Wtime() - start);
+  states_.add_lubrication(*lubrication_, atoms, pairs_, atom->f, hydrodynamic_force_);
 }
 
 // The nearest wall of every owned particle, within the lubrication reach plus the farthest a
 // particle may move in a fluid step; followed along its normal until the next fluid step.
 void FixLbmPore::find_walls() {
   if (!options_.lubrication) return;
+  const coupling::RunTimer::Scope timed(timer_, coupling::RunTimer::kLubrication);
   const double reach = (options_.lubrication_cutoff + coupling::kMaxShiftPerFluidStep) * options_.dx;
-  for (int i = 0; i < atom->nlocal; ++i) {
-    auto& wall = own_state(i).wall;
-    if (!(atom->mask[i] & groupbit)) {
-      wall.known = false;
-      continue;
-    }
-    const double* x = atom->x[i];
-    wall = coupling::find_nearest_wall(*surface_, {x[0], x[1], x[2]}, atom->radius[i] + reach, wall_points_);
-  }
+  states_.find_walls(atom_arrays(), *surface_, reach, wall_points_);
 }
 
 void FixLbmPore::end_of_step() {
-  if (update->ntimestep % options_.n_dem != 0) return;
-  fluid_step();
+  if (update->ntimestep % options_.n_dem == 0) fluid_step();
 }
 
-// Lattice-unit copies of the group's owned atoms and ghosts. The fluid sees each sphere move
-// with the velocity coupling::wall_velocity_of_steps makes of its mean velocities over the
-// last fluid steps (x - x_previous) / dt_lbm, the velocities of the mapping's motion (the
-// instantaneous velocity of a particle in a stiff contact oscillates within the substeps, and
-// sampling it once per fluid step feeds that noise into the fluid); that header says why two
-// steps. `advance` is false at setup, where no step has passed.
+// Lattice-unit copies of the group's owned atoms and ghosts, with the velocity the fluid
+// sees each sphere move with (coupling::StepMotion, from its displacements over the last
+// fluid steps). `advance` is false at setup, where no step has passed.
 void FixLbmPore::gather_particles(bool advance) {
-  double** x = atom->x;
-  double** v = atom->v;
-  const double dt_lbm = units_->dt_lbm();
-  for (int i = 0; i < atom->nlocal; ++i) {
-    auto& s = own_state(i);
-    if (advance && s.has_step_position) {
-      double d[3] = {x[i][0] - s.step_position[0], x[i][1] - s.step_position[1], x[i][2] - s.step_position[2]};
-      domain->minimum_image(d);  // an atom wrapped through a periodic face
-      const coupling::Vec3 step_velocity{d[0] / dt_lbm, d[1] / dt_lbm, d[2] / dt_lbm};
-      s.fluid_velocity = coupling::wall_velocity_of_steps(
-          step_velocity, s.has_last_step_velocity ? &s.last_step_velocity : nullptr);
-      s.last_step_velocity = step_velocity;
-      s.has_last_step_velocity = true;
-    } else {
-      for (int a = 0; a < 3; ++a) s.fluid_velocity[a] = v[i][a];
-    }
-    s.step_position = {x[i][0], x[i][1], x[i][2]};
-    s.has_step_position = true;
-  }
-  comm->forward_comm_fix(this);
-  fluid_velocity_rows_.resize(atom->nlocal + atom->nghost);
-  for (int i = 0; i < atom->nlocal + atom->nghost; ++i) fluid_velocity_rows_[i] = state_[i].fluid_velocity.data();
-  lbm_pore::AtomArrays atoms;
-  atoms.nlocal = atom->nlocal;
-  atoms.nghost = atom->nghost;
-  atoms.mask = atom->mask;
-  atoms.groupbit = groupbit;
-  atoms.tag = atom->tag;
-  atoms.x = atom->x;
-  atoms.v = fluid_velocity_rows_.data();
-  atoms.omega = atom->omega_flag && options_.rotation ? atom->omega : nullptr;
-  atoms.radius = atom->radius;
-  particles_.gather(atoms, *frame_, dt_lbm);
+  const lbm_pore::AtomArrays atoms = atom_arrays();
+  states_.step_motion(atoms, units_->dt_lbm(), advance, [&](double* d) { domain->minimum_image(d); });
+  comm->forward_comm_fix(this);  // to the ghosts
+  particles_.gather(states_.seen_by_fluid(atoms), *frame_, *units_);
 }
 
 void FixLbmPore::fluid_step() {
-  const double start = MPI_Wtime();
-  gather_particles(true);
-  const double walls_start = MPI_Wtime();
-  find_walls();
-  const double walls_time = MPI_Wtime() - walls_start;
-  timer_.add(coupling::RunTimer::kLubrication, walls_time);
-  check_particle_speed();
-  // Without particles (and none left to unmap) the step is the pure fluid step: a scene pays
-  // only for what it uses.
-  long long count = static_cast<long long>(particles_.num_owned()) +
-                    static_cast<long long>(coupling_->mapping().moving_cells().size());
-  MPI_Allreduce(MPI_IN_PLACE, &count, 1, MPI_LONG_LONG, MPI_SUM, world);
-  if (count > 0) share_particle_reach();
-  if (count == 0) {
-    solver_->step();
-  } else {
-    coupling_->step(particles_.view());
-    monitor_->record_coupling_mass(
-        coupling_->last_surface_mass(),
-        coupling_->last_mass_change().net_over(solver_->parameters().rho0));
+  {
+    const coupling::RunTimer::Scope timed(timer_, coupling::RunTimer::kFluid);
+    gather_particles(true);
+    find_walls();
+    check_particle_speed();
+    const bool coupled = coupling::advance_fluid(*coupling_, particles_.view(), comm->cutghost, options_.dx,
+                                                 solver_->decomposition().comm) == coupling::FluidStep::kCoupled;
+    if (coupled)
+      monitor_->record_coupling_mass(coupling_->last_surface_mass(),
+                                     coupling_->last_mass_change().net_over(solver_->parameters().rho0));
+    store_loads(coupled);
+    ++fluid_steps_;
+    timer_.count_fluid_step();
   }
-  store_loads(count > 0);
-  ++fluid_steps_;
-  timer_.count_fluid_step();
-  timer_.add(coupling::RunTimer::kFluid, MPI_Wtime() - start - walls_time);
-  const double diagnostics_start = MPI_Wtime();
+  const coupling::RunTimer::Scope timed(timer_, coupling::RunTimer::kDiagnostics);
   // A full scan of the lattice costs a sizeable part of a step: the NaN/runaway guard runs
   // every kCheckEvery fluid steps (a blow-up takes many steps to reach the particles), the
   // fluid diagnostics only when thermo output asks for them.
@@ -419,44 +304,16 @@ void FixLbmPore::fluid_step() {
   record_fluid_step();
   if (vtk_ && fluid_steps_ % options_.vtk_every == 0)
     vtk_->write(*solver_, units_->time_to_physical(double(fluid_steps_)));
-  timer_.add(coupling::RunTimer::kDiagnostics, MPI_Wtime() - diagnostics_start);
-}
-
-// The halo carries the ghost moments only near the spheres when every rank's view holds each
-// sphere within its radius + 2.5 cells (SphereCoupling::set_particle_reach): LIGGGHTS's ghost
-// cutoff against the largest radius of the group, both in cells.
-void FixLbmPore::share_particle_reach() {
-  double largest = 0.0;
-  for (int i = 0; i < atom->nlocal; ++i)
-    if (atom->mask[i] & groupbit) largest = std::max(largest, atom->radius[i]);
-  MPI_Allreduce(MPI_IN_PLACE, &largest, 1, MPI_DOUBLE, MPI_MAX, world);
-  const double cutoff = std::min({comm->cutghost[0], comm->cutghost[1], comm->cutghost[2]});
-  coupling_->set_particle_reach(cutoff / options_.dx, largest / options_.dx);
 }
 
 // The loads of the step, in script units, onto the atoms they belong to; ghosts' shares go
 // back to their owners (LIGGGHTS reverse communication, which also folds periodic images).
 void FixLbmPore::store_loads(bool coupled) {
-  const int ntotal = atom->nlocal + atom->nghost;
-  for (int i = 0; i < ntotal; ++i) coupling::SubstepLoadModel::start_fluid_step(state_[i].load, i < atom->nlocal);
+  states_.start_fluid_step(atom->nlocal, atom->nlocal + atom->nghost);
   if (!coupled) return;  // pure fluid step: no loads
-  const auto& loads = coupling_->loads();
-  const double force_unit = units_->force_unit();
-  const double torque_unit = units_->torque_to_physical(1.0);
-  // C converts lattice velocity to lattice force: force_unit * dt_lbm / dx per script velocity.
-  const double coefficient_unit = force_unit * units_->dt_lbm() / options_.dx;
-  for (std::size_t p = 0; p < particles_.size(); ++p) {
-    auto& load = state_[particles_.atom(p)].load;
-    for (int a = 0; a < 3; ++a) {
-      load.force[a] = loads.force[p][a] * force_unit;
-      load.torque[a] = loads.torque[p][a] * torque_unit;
-    }
-    load.coefficient = loads.velocity_coefficient[p] * coefficient_unit;
-  }
+  states_.store_loads(particles_, coupling_->loads(), *units_);
   comm->reverse_comm_fix(this);
-  double** v = atom->v;
-  for (int i = 0; i < atom->nlocal; ++i)
-    load_model_->finish_fluid_step(state_[i].load, {v[i][0], v[i][1], v[i][2]}, atom->rmass ? atom->rmass[i] : 0.0);
+  states_.finish_fluid_step(*load_model_, atom_arrays(), atom->rmass);
 }
 
 const coupling::LatticeFrame& FixLbmPore::frame() const { return *frame_; }

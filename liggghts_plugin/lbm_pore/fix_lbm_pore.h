@@ -3,16 +3,19 @@
 // The lattice-Boltzmann fluid inside LIGGGHTS: owns the lattice and the voxel geometry,
 // advances the fluid once every n_dem DEM steps on LIGGGHTS's own subdomains, hands the
 // hydrodynamic load to the particles, and exposes the paper's diagnostics as a global
-// vector. The physics lives in lbm/ and coupling/ (the step pipeline, the substep load
-// model, lubrication, the pore monitor); this class parses, converts units, moves data
-// between LIGGGHTS's arrays and those objects, and calls them.
+// vector. The physics lives in lbm/ and coupling/ (the step pipeline and its policy, the
+// substep load model, lubrication, the pore monitor and the guards, the units); this class
+// parses, moves data between LIGGGHTS's arrays and those objects (through the plugin's
+// LIGGGHTS-free helpers: AtomStates, LatticeParticles, pore_scene_setup.h) and calls them.
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
-#include "atom_coupling_state.h"
+#include "atom_states.h"
 #include "contact/voxel_surface.h"
 #include "coupling/diagnostics/pore_monitor.h"
+#include "coupling/diagnostics/run_guards.h"
 #include "coupling/diagnostics/run_timer.h"
 #include "coupling/force/substep_load.h"
 #include "coupling/lubrication/lubrication_kernel.h"
@@ -81,11 +84,10 @@ class FixLbmPore : public Fix {
   static constexpr int kBurstRows = 1000;
 
   void build_geometry();
-  void build_lattice();
-  void find_gravity();
+  void build_lattice(std::unique_ptr<coupling::UnitConversion> units);
+  std::optional<coupling::Vec3> find_gravity() const;
   void fluid_step();
   void gather_particles(bool advance);
-  void share_particle_reach();
   void store_loads(bool coupled);
   void collect_group_pairs();
   void find_walls();
@@ -93,8 +95,8 @@ class FixLbmPore : public Fix {
   void record_fluid_step();
   void check_fluid_state();
   void check_particle_speed();
-  lbm_pore::AtomCouplingState& own_state(int i);  // resets a slot that held another atom
-  coupling::ParticleView atoms_view() const;      // the atom arrays as they are (script units)
+  void stop_everywhere(const coupling::GuardVerdict& verdict, const char* what);
+  lbm_pore::AtomArrays atom_arrays() const;  // the atom arrays as they are (script units)
 
   lbm_pore::PoreOptions options_;
   std::unique_ptr<coupling::UnitConversion> units_;
@@ -110,19 +112,15 @@ class FixLbmPore : public Fix {
   std::vector<double> restored_state_;        // the monitor's state from a restart file
   std::unique_ptr<lbm::VtkSeriesWriter> vtk_;
   lbm_pore::LatticeParticles particles_;
-  std::vector<lbm_pore::AtomCouplingState> state_;  // per atom (owned and ghosts)
+  lbm_pore::AtomStates states_;  // per atom (owned and ghosts)
   // Per atom, the per-atom output: the hydrodynamic force of the last substep (the stored
   // load with its velocity correction, plus lubrication), script units.
   double** hydrodynamic_force_ = nullptr;
-  std::vector<double> lubrication_before_;          // scratch: f before the lubrication
-  std::vector<double*> fluid_velocity_rows_;        // rows of state_ for the particle gather
   std::vector<coupling::ParticlePair> pairs_;       // the group's pairs of the neighbour list
   long long pairs_step_ = -1;                       // the neighbour build pairs_ is from (step)
   std::vector<contact::SurfacePoint> wall_points_;  // scratch of the wall searches
   std::vector<char> bonded_atoms_, bonded_, on_wall_;  // scratch of the deposit count
   class NeighList* list_ = nullptr;
-  coupling::Vec3 gravity_{0.0, 0.0, 0.0};  // fix gravity's acceleration, 0 without one
-  bool has_gravity_ = false;
   std::string resume_checkpoint_;  // set by restart(): read once the lattice exists
   bool resumed_ = false;           // the mapping must be rebuilt from the checkpoint
   long long fluid_steps_ = 0;

@@ -1,8 +1,7 @@
 // fix lbm/pore's per-atom state: growing and moving it with its atoms, restart files (the
 // fluid goes to a companion checkpoint), and LIGGGHTS's forward/reverse communication. The
-// flat layout of the buffers is lbm_pore::AtomCouplingState's.
+// flat layouts of the buffers are lbm_pore::AtomCouplingState's and AtomStates'.
 #include <cstdio>
-#include <cstring>
 #include <string>
 
 #include "atom.h"
@@ -13,18 +12,17 @@
 #include "lbm/input_error.h"
 #include "memory.h"
 #include "plugin_common/stop_run.h"
+#include "restart_record.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;
-using lbm_pore::AtomCouplingState;
 
 // Restart: the particles travel in LIGGGHTS's restart file with their state; the fluid goes
-// to a companion checkpoint (one file per rank) whose name is stored in the restart file,
-// after the monitor's state (the cumulative particle fluxes, the burst detector).
+// to a companion checkpoint (one file per rank) whose path the restart file keeps, after the
+// monitor's state (lbm_pore::RestartRecord).
 void FixLbmPore::write_restart(FILE* fp) {
-  std::string prefix = options_.checkpoint_prefix.empty() ? std::string(id) + ".fluid"
-                                                          : options_.checkpoint_prefix;
-  const std::string path = prefix + "." + std::to_string(update->ntimestep);
+  const std::string prefix = lbm_pore::checkpoint_prefix(options_, id);
+  const std::string path = lbm_pore::checkpoint_path(prefix, update->ntimestep);
   if (update->ntimestep % options_.n_dem != 0 && comm->me == 0)
     error->warning(FLERR, "fix lbm/pore: restart written between fluid steps (not a multiple of "
                           "n_dem): the continued run will differ slightly from an uninterrupted one");
@@ -34,111 +32,57 @@ void FixLbmPore::write_restart(FILE* fp) {
   } catch (const lbm::InputError& e) {
     lbm_pore::stop_on_this_rank(error, comm->me, screen, logfile, e.what());
   }
-  if (comm->me == 0) {
-    const std::vector<double> state = monitor_->state();
-    const double count = double(state.size());
-    const int size = static_cast<int>(sizeof(double) * (state.size() + 1) + path.size() + 1);
-    std::fwrite(&size, sizeof(int), 1, fp);
-    std::fwrite(&count, sizeof(double), 1, fp);
-    std::fwrite(state.data(), sizeof(double), state.size(), fp);
-    std::fwrite(path.c_str(), 1, path.size() + 1, fp);
-  }
+  if (comm->me != 0) return;
+  const std::string record = lbm_pore::RestartRecord{monitor_->state(), path}.bytes();
+  const int size = static_cast<int>(record.size());
+  std::fwrite(&size, sizeof(int), 1, fp);
+  std::fwrite(record.data(), 1, record.size(), fp);
 }
 
-// buf: the monitor's state (its length first), then the checkpoint path.
 void FixLbmPore::restart(char* buf) {
-  double count = 0.0;
-  std::memcpy(&count, buf, sizeof(double));
-  restored_state_.resize(static_cast<std::size_t>(count));
-  std::memcpy(restored_state_.data(), buf + sizeof(double), sizeof(double) * restored_state_.size());
-  resume_checkpoint_ = std::string(buf + sizeof(double) * (restored_state_.size() + 1));
+  lbm_pore::RestartRecord record = lbm_pore::RestartRecord::read(buf);
+  restored_state_ = std::move(record.monitor_state);
+  resume_checkpoint_ = std::move(record.checkpoint);
 }
 
 void FixLbmPore::grow_arrays(int nmax) {
-  const int old = static_cast<int>(state_.size());
-  state_.resize(nmax);
+  const int old = states_.size();
+  states_.resize(nmax);
   memory->grow(hydrodynamic_force_, nmax, 3, "lbm/pore:hydrodynamic_force");
   for (int i = old; i < nmax; ++i) hydrodynamic_force_[i][0] = hydrodynamic_force_[i][1] = hydrodynamic_force_[i][2] = 0.0;
   array_atom = hydrodynamic_force_;
 }
 
-// A new atom (fix insert/...) starts with no load and no previous position: its slot may
-// hold a former atom's values. Not every LIGGGHTS insertion calls set_arrays, so the slot
-// also records its atom's tag and own_state() resets a slot whose tag differs.
-void FixLbmPore::set_arrays(int i) {
-  state_[i] = AtomCouplingState{};
-  state_[i].tag = atom->tag[i];
-}
-
-AtomCouplingState& FixLbmPore::own_state(int i) {
-  if (state_[i].tag != double(atom->tag[i])) set_arrays(i);
-  return state_[i];
-}
+// A new atom (fix insert/...) starts with no load and no previous position.
+void FixLbmPore::set_arrays(int i) { states_.reset(i, atom->tag[i]); }
 
 void FixLbmPore::copy_arrays(int i, int j, int) {
-  state_[j] = state_[i];
+  states_[j] = states_[i];
   for (int a = 0; a < 3; ++a) hydrodynamic_force_[j][a] = hydrodynamic_force_[i][a];
 }
 
-int FixLbmPore::pack_exchange(int i, double* buf) {
-  state_[i].pack(buf);
-  return AtomCouplingState::kDoubles;
-}
-
-int FixLbmPore::unpack_exchange(int nlocal, double* buf) {
-  state_[nlocal].unpack(buf);
-  return AtomCouplingState::kDoubles;
-}
-
-int FixLbmPore::pack_restart(int i, double* buf) {
-  buf[0] = AtomCouplingState::kDoubles + 1;
-  state_[i].pack(buf + 1);
-  return AtomCouplingState::kDoubles + 1;
-}
+int FixLbmPore::pack_exchange(int i, double* buf) { return states_.pack_exchange(i, buf); }
+int FixLbmPore::unpack_exchange(int nlocal, double* buf) { return states_.unpack_exchange(nlocal, buf); }
+int FixLbmPore::pack_restart(int i, double* buf) { return states_.pack_restart(i, buf); }
 
 void FixLbmPore::unpack_restart(int nlocal, int nth) {
   double** extra = atom->extra;
   int m = 0;
   for (int n = 0; n < nth; ++n) m += static_cast<int>(extra[nlocal][m]);
-  const int size = static_cast<int>(extra[nlocal][m]);
-  if (size != AtomCouplingState::kDoubles + 1 && size != AtomCouplingState::kDoubles1 + 1)
+  if (!states_.unpack_restart(nlocal, &extra[nlocal][m]))
     error->one(FLERR, "fix lbm/pore: the restart file's per-atom data has another layout (written by "
                       "another version of lbm-pore); restart from a file written by this one");
-  state_[nlocal].unpack(&extra[nlocal][m + 1], size - 1);
 }
 
-int FixLbmPore::size_restart(int) { return AtomCouplingState::kDoubles + 1; }
-int FixLbmPore::maxsize_restart() { return AtomCouplingState::kDoubles + 1; }
+int FixLbmPore::size_restart(int) { return lbm_pore::AtomStates::kRestart; }
+int FixLbmPore::maxsize_restart() { return lbm_pore::AtomStates::kRestart; }
 
-// Forward: the velocity the fluid sees and the angular velocity, owner -> ghosts.
+// Forward: the velocity the fluid sees and the angular velocity, owner -> ghosts. Reverse:
+// the loads the fluid put on ghost images, onto their owners. LIGGGHTS's Comm expects the
+// count per atom that the packs return, not the total.
 int FixLbmPore::pack_comm(int n, int* list, double* buf, int, int*) {
-  double** omega = atom->omega;
-  int m = 0;
-  for (int k = 0; k < n; ++k) {
-    const int i = list[k];
-    for (int a = 0; a < 3; ++a) buf[m++] = state_[i].fluid_velocity[a];
-    for (int a = 0; a < 3; ++a) buf[m++] = omega ? omega[i][a] : 0.0;
-  }
-  return comm_forward;  // LIGGGHTS's Comm expects the count per atom, not the total
+  return states_.pack_forward(n, list, atom->omega, buf);
 }
-
-void FixLbmPore::unpack_comm(int n, int first, double* buf) {
-  double** omega = atom->omega;
-  int m = 0;
-  for (int i = first; i < first + n; ++i) {
-    for (int a = 0; a < 3; ++a) state_[i].fluid_velocity[a] = buf[m++];
-    for (int a = 0; a < 3; ++a) {
-      if (omega) omega[i][a] = buf[m];
-      ++m;
-    }
-  }
-}
-
-int FixLbmPore::pack_reverse_comm(int n, int first, double* buf) {
-  for (int i = first; i < first + n; ++i) state_[i].pack_summed(buf + AtomCouplingState::kSummed * (i - first));
-  return AtomCouplingState::kSummed;  // per atom, as LIGGGHTS's Comm expects
-}
-
-void FixLbmPore::unpack_reverse_comm(int n, int* list, double* buf) {
-  for (int k = 0; k < n; ++k) state_[list[k]].add_summed(buf + AtomCouplingState::kSummed * k);
-}
+void FixLbmPore::unpack_comm(int n, int first, double* buf) { states_.unpack_forward(n, first, atom->omega, buf); }
+int FixLbmPore::pack_reverse_comm(int n, int first, double* buf) { return states_.pack_reverse(n, first, buf); }
+void FixLbmPore::unpack_reverse_comm(int n, int* list, double* buf) { states_.unpack_reverse(n, list, buf); }

@@ -9,6 +9,7 @@
 
 #include "coupling/lattice_frame.h"
 #include "coupling/particle_view.h"
+#include "coupling/unit_conversion.h"
 
 namespace lbm_pore {
 
@@ -23,10 +24,15 @@ struct AtomArrays {
   const double* radius = nullptr;
 };
 
+// The atoms as they are, in host units, over the host's own arrays (x and v as contiguous
+// rows, as LIGGGHTS allocates them), for the kernels that work in host units (lubrication,
+// bonds). Owned atoms and ghosts, the group's or not.
+coupling::ParticleView host_view(const AtomArrays& atoms);
+
 class LatticeParticles {
  public:
-  // velocity_to_lattice: factor dt_lbm / dx; angular velocities scale with dt_lbm alone.
-  void gather(const AtomArrays& atoms, const coupling::LatticeFrame& frame, double dt_lbm);
+  // Positions through the frame, velocities, angular velocities and radii through the units.
+  void gather(const AtomArrays& atoms, const coupling::LatticeFrame& frame, const coupling::UnitConversion& units);
 
   coupling::ParticleView view() const;
   std::size_t size() const { return atom_.size(); }

@@ -14,6 +14,7 @@
 #include <string>
 #include <utility>
 
+#include "coupling/memory_estimate.h"
 #include "lbm/input_error.h"
 #include "lbm/memory_estimate.h"
 #include "lbm/pore_scene.h"
@@ -189,6 +190,40 @@ coupling::BurstCriteria burst_criteria(const PoreOptions& o, const coupling::Uni
   return criteria;
 }
 
+void set_monitor_criteria(coupling::PoreMonitorSetup& setup, const PoreOptions& o,
+                          const coupling::UnitConversion& units, const lbm::FlowDrive& drive) {
+  setup.criteria.speed_threshold = deposit_speed_threshold(o, units, drive);
+  setup.bursts = burst_criteria(o, units);
+  setup.burst_min_deposited = o.burst_deposits;
+}
+
+coupling::SphereCouplingOptions coupling_options(const PoreOptions& o) {
+  coupling::SphereCouplingOptions co;
+  co.wall_scheme = lbm::moving_wall::parse(o.boundary);
+  co.conserve_link_mass = o.mass_correction;
+  co.reference_pressure =
+      o.keep_reference_pressure ? coupling::ReferencePressure::kKept : coupling::ReferencePressure::kRemoved;
+  return co;
+}
+
+coupling::SubstepLoadParameters substep_load_parameters(const PoreOptions& o, const coupling::UnitConversion& units,
+                                                        const coupling::Vec3* gravity) {
+  coupling::SubstepLoadParameters lp;
+  lp.dt_fluid = units.dt_lbm();
+  lp.buoyancy = gravity != nullptr;
+  lp.fluid_density = o.rho;
+  if (gravity) lp.gravity = *gravity;
+  return lp;
+}
+
+std::string buoyancy_summary(const coupling::Vec3& g) {
+  char text[300];
+  std::snprintf(text, sizeof text,
+                "fix lbm/pore: fix gravity found: buoyancy -rho V g added to each particle, g = (%g, %g, %g)\n",
+                g[0], g[1], g[2]);
+  return text;
+}
+
 coupling::BurstUnits burst_units(const std::string& unit_style) {
   coupling::BurstUnits units;
   units.pressure = "P_out";
@@ -259,20 +294,9 @@ std::string setup_summary(const PoreOptions& o, const coupling::UnitConversion& 
   if (bytes_per_node > 0.0)
     std::snprintf(text + n, sizeof text - n,
                   "fix lbm/pore: memory %.0f bytes per lattice node (fluid %.0f, particle coupling %.0f)\n",
-                  bytes_per_node + coupling_bytes_per_node(threads), bytes_per_node,
-                  coupling_bytes_per_node(threads));
+                  bytes_per_node + coupling::coupling_bytes_per_node(threads), bytes_per_node,
+                  coupling::coupling_bytes_per_node(threads));
   return text;
-}
-
-double coupling_bytes_per_node(int threads) { return 8.0 + 36.0 * std::max(threads, 1) + 8.0 + 32.0; }
-
-coupling::SphereCouplingOptions coupling_options(const PoreOptions& o) {
-  coupling::SphereCouplingOptions co;
-  co.wall_scheme = lbm::moving_wall::parse(o.boundary);
-  co.conserve_link_mass = o.mass_correction;
-  co.reference_pressure =
-      o.keep_reference_pressure ? coupling::ReferencePressure::kKept : coupling::ReferencePressure::kRemoved;
-  return co;
 }
 
 }  // namespace lbm_pore

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "coupling/diagnostics/pore_monitor.h"
+#include "coupling/force/substep_load.h"
 #include "coupling/lubrication/lubrication_kernel.h"
 #include "coupling/sphere_coupling.h"
 #include "coupling/unit_conversion.h"
@@ -57,6 +58,22 @@ double deposit_speed_threshold(const PoreOptions& options, const coupling::UnitC
 // The burst detector's criteria: burst_drop, and burst_window in fluid steps (default 1000).
 coupling::BurstCriteria burst_criteria(const PoreOptions& options, const coupling::UnitConversion& units);
 
+// The monitor's criteria, once the drive is known, set in the scene's `setup`: the deposit
+// speed threshold (deposit_speed_threshold), the burst criteria and 'burst_deposits'.
+void set_monitor_criteria(coupling::PoreMonitorSetup& setup, const PoreOptions& options,
+                          const coupling::UnitConversion& units, const lbm::FlowDrive& drive);
+
+// The sphere coupling's options from the keywords: boundary, mass_correction,
+// reference_pressure.
+coupling::SphereCouplingOptions coupling_options(const PoreOptions& options);
+
+// The substep load model's parameters: the fluid step, and buoyancy in the fluid's density
+// where the script has gravity (`gravity`: its acceleration, null without).
+coupling::SubstepLoadParameters substep_load_parameters(const PoreOptions& options, const coupling::UnitConversion& units,
+                                                        const coupling::Vec3* gravity);
+// The line printed when buoyancy is on, with the acceleration it uses.
+std::string buoyancy_summary(const coupling::Vec3& gravity);
+
 // Unit names for the burst file's header, from LIGGGHTS's unit style (pressures in P_out).
 coupling::BurstUnits burst_units(const std::string& unit_style);
 
@@ -69,23 +86,16 @@ lbm::FluidParameters fluid_parameters(const PoreOptions& options, const coupling
 // The lubrication kernel in the script's units (lattice-unit law, cutoff in cells).
 coupling::LubricationKernel lubrication_kernel(const PoreOptions& options, const coupling::UnitConversion& units);
 
-// The coupling's options from the keywords: boundary, mass_correction, reference_pressure.
-coupling::SphereCouplingOptions coupling_options(const PoreOptions& options);
-
 // The neighbour list must hold every pair within the lubrication cutoff (contact distance
 // plus skin): throws lbm::InputError saying which skin is needed.
 void check_neighbor_skin(const PoreOptions& options, double skin);
 
 // The lines printed at setup: lattice, time steps, tau, drive and its Mach number or
 // density difference, the moving-wall scheme and lubrication, and the memory per lattice
-// node (the fluid's, lbm::FluidSolver::bytes_per_node, plus coupling_bytes_per_node;
-// bytes_per_node 0: not printed).
+// node (the fluid's, lbm::FluidSolver::bytes_per_node, plus coupling::coupling_bytes_per_node
+// for `threads`; bytes_per_node 0: not printed).
 std::string setup_summary(const PoreOptions& options, const coupling::UnitConversion& units,
                           const std::array<int, 3>& dims, const lbm::FlowDrive& drive, double dt_dem,
                           double pore_diameter, double bytes_per_node, int threads = 1);
-// The coupling's per-node arrays, at most: sphere mapping 8 bytes, one moving-wall moment
-// cache table of 36 per OpenMP thread, and where a rank or periodic neighbour exists the
-// refill's ghost densities 8 and the ghost nodes' moments 32 (SphereCoupling).
-double coupling_bytes_per_node(int threads);
 
 }  // namespace lbm_pore

@@ -282,3 +282,18 @@ TEST(BurstFileWriter, HeaderOnceThenOneRowPerBurst) {
             "42 1.5 2 1 1 0.25 300 4 7 2 -3.5 4 6.25\n42 1.5 2 1 1 0.25 300 4 7 2 -3.5 4 6.25\n");
   EXPECT_THROW(BurstFileWriter("/nonexistent/dir/bursts.txt", units, false), std::runtime_error);
 }
+
+// The line a host prints when a burst is recorded, from the record's own numbers.
+TEST(BurstRecord, AnnouncementGivesThePeakTheFallAndTheDeposits) {
+  BurstRecord r;
+  r.step = 123400;
+  r.peak_pressure = 0.5;
+  r.pressure_after = 0.375;
+  r.pressure_drop = 0.125;
+  r.duration = 7.5;
+  r.count_before = 12;
+  r.count_after = 9;
+  EXPECT_EQ(r.announcement(),
+            "erosive burst: the pressure loss fell from 0.5 to 0.375 P_out (25 %) within 7.5 time units "
+            "after step 123400; 12 deposited particles before, 9 after\n");
+}

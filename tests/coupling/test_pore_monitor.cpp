@@ -82,6 +82,11 @@ TEST(PoreMonitor, DepositsAndCrossingsInHostUnits) {
   EXPECT_EQ(monitor.values()[PoreMonitor::kParticlesIn], 1.0);
   EXPECT_NEAR(monitor.values()[PoreMonitor::kParticlesInVolume], 4.0 / 3.0 * M_PI * 8.0, 1e-12);
 
+  // No burst yet: every entry of the burst table reads 0, inside the rows or not.
+  EXPECT_EQ(monitor.burst_value(0, 0), 0.0);
+  EXPECT_EQ(monitor.burst_value(-1, 3), 0.0);
+  EXPECT_EQ(monitor.burst_value(2, BurstRecord::kColumns), 0.0);
+
   PoreMonitor resumed(setup, units);
   resumed.restore(monitor.state());
   EXPECT_EQ(resumed.values(), monitor.values());

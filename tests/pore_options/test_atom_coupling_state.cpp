@@ -15,15 +15,15 @@ AtomCouplingState numbered() {
   double v = 1.0;
   auto next = [&] { return v += 1.0; };
   for (auto* vec : {&s.load.force, &s.load.torque, &s.load.step_velocity, &s.load.previous_force,
-                    &s.load.previous_velocity, &s.step_position, &s.fluid_velocity, &s.wall.normal,
-                    &s.wall.searched_from, &s.last_step_velocity})
+                    &s.load.previous_velocity, &s.motion.position, &s.fluid_velocity, &s.wall.normal,
+                    &s.wall.searched_from, &s.motion.last_velocity})
     for (double& x : *vec) x = next();
   s.load.coefficient = next();
   s.tag = 42.0;
   s.wall.distance = next();
-  s.has_step_position = true;
+  s.motion.has_position = true;
+  s.motion.has_last_velocity = true;
   s.wall.known = true;
-  s.has_last_step_velocity = true;
   return s;
 }
 
@@ -31,11 +31,12 @@ bool same(const AtomCouplingState& a, const AtomCouplingState& b) {
   return a.load.force == b.load.force && a.load.torque == b.load.torque &&
          a.load.coefficient == b.load.coefficient && a.load.step_velocity == b.load.step_velocity &&
          a.load.previous_force == b.load.previous_force && a.load.previous_velocity == b.load.previous_velocity &&
-         a.step_position == b.step_position && a.has_step_position == b.has_step_position &&
+         a.motion.position == b.motion.position && a.motion.has_position == b.motion.has_position &&
+         a.motion.last_velocity == b.motion.last_velocity &&
+         a.motion.has_last_velocity == b.motion.has_last_velocity &&
          a.fluid_velocity == b.fluid_velocity && a.tag == b.tag && a.wall.known == b.wall.known &&
          a.wall.distance == b.wall.distance && a.wall.normal == b.wall.normal &&
-         a.wall.searched_from == b.wall.searched_from && a.last_step_velocity == b.last_step_velocity &&
-         a.has_last_step_velocity == b.has_last_step_velocity;
+         a.wall.searched_from == b.wall.searched_from;
 }
 }  // namespace
 
@@ -54,7 +55,7 @@ TEST(AtomCouplingState, EveryFieldSurvivesTheFlatBuffer) {
       << "only the three flags share the value 1";
 }
 
-// A restart file of the layout before last_step_velocity: its kDoubles1 values are the
+// A restart file of the layout before motion.last_velocity: its kDoubles1 values are the
 // prefix of today's, the field added since starts unset (the two-step mean then begins with
 // the one-step one).
 TEST(AtomCouplingState, TheEarlierLayoutReadsAsAPrefix) {
@@ -62,11 +63,11 @@ TEST(AtomCouplingState, TheEarlierLayoutReadsAsAPrefix) {
   std::vector<double> buffer(AtomCouplingState::kDoubles);
   s.pack(buffer.data());
   AtomCouplingState back;
-  back.last_step_velocity = {9.0, 9.0, 9.0};
+  back.motion.last_velocity = {9.0, 9.0, 9.0};
   back.unpack(buffer.data(), AtomCouplingState::kDoubles1);
   AtomCouplingState expected = s;
-  expected.last_step_velocity = {0.0, 0.0, 0.0};
-  expected.has_last_step_velocity = false;
+  expected.motion.last_velocity = {0.0, 0.0, 0.0};
+  expected.motion.has_last_velocity = false;
   EXPECT_TRUE(same(expected, back));
 }
 

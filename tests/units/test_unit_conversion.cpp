@@ -111,3 +111,39 @@ TEST(LatticeFrame, PeriodicBoxMustBeTheLatticePeriod) {
   const int all_periodic[3] = {1, 1, 1};
   EXPECT_NO_THROW(frame.check_fills_box(lo, whole, all_periodic));
 }
+
+// The units of the loads a fluid step hands the particles, and the factors a host converts
+// whole particle arrays with: the same numbers as the arithmetic written out, to the bit.
+TEST(UnitConversion, LoadUnitsAndArrayFactors) {
+  UnitInputs in;
+  in.dx = 0.140845;
+  in.rho = 1.3;
+  in.nu = 0.02;
+  in.dt_dem = 0.01;
+  in.n_dem = 100;
+  const UnitConversion u(in);
+  const double dt = u.dt_lbm();
+  EXPECT_EQ(u.torque_unit(), u.force_unit() * in.dx);
+  EXPECT_EQ(u.torque_unit(), u.torque_to_physical(1.0));
+  EXPECT_EQ(u.velocity_coefficient_unit(), u.force_unit() * dt / in.dx);
+  EXPECT_NEAR(u.velocity_coefficient_unit(), u.force_unit() / u.velocity_to_physical(1.0), 1e-12 * u.force_unit());
+  EXPECT_EQ(u.velocity_to_lattice_factor(), dt / in.dx);
+  EXPECT_NEAR(0.37 * u.velocity_to_lattice_factor(), u.velocity_to_lattice(0.37), 1e-15);
+  EXPECT_EQ(u.angular_velocity_to_lattice_factor(), dt);
+}
+
+TEST(UnitConversion, TauIsFixedOnceTheLatticeExists) {
+  UnitInputs in;
+  const UnitConversion first(in);
+  EXPECT_NO_THROW(first.check_same_tau(UnitConversion(in)));
+  in.dt_dem = 0.02;
+  in.n_dem = 50;  // the same fluid step: the same tau
+  EXPECT_NO_THROW(first.check_same_tau(UnitConversion(in)));
+  in.n_dem = 100;
+  try {
+    first.check_same_tau(UnitConversion(in));
+    FAIL() << "a doubled fluid step was accepted";
+  } catch (const lbm::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("(tau 1.000000 -> 1.500000)"), std::string::npos) << e.what();
+  }
+}

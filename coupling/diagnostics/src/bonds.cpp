@@ -33,4 +33,10 @@ bool adheres_to_wall(const contact::VoxelSurface& surface, const Vec3& x, double
   return !scratch.empty();
 }
 
+bool touches_wall(const NearestWall* followed, const contact::VoxelSurface& surface, const Vec3& x,
+                  double radius, std::vector<contact::SurfacePoint>& scratch) {
+  if (followed) return followed->known && within_adhesion_range(followed->distance, radius);
+  return adheres_to_wall(surface, x, radius, scratch);
+}
+
 }  // namespace coupling

@@ -1,6 +1,7 @@
 #include "coupling/diagnostics/burst_detector.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <stdexcept>
 
 namespace coupling {
@@ -13,6 +14,16 @@ std::vector<double> BurstRecord::row() const {
           double(count_before), double(count_after),
           wall_force,           double(on_wall),
           pressure_force};
+}
+
+std::string BurstRecord::announcement() const {
+  char text[400];
+  std::snprintf(text, sizeof text,
+                "erosive burst: the pressure loss fell from %.4g to %.4g P_out (%.0f %%) within %g "
+                "time units after step %lld; %lld deposited particles before, %lld after\n",
+                peak_pressure, pressure_after, 100.0 * pressure_drop / peak_pressure, duration, step,
+                count_before, count_after);
+  return text;
 }
 
 BurstDetector::BurstDetector(const BurstCriteria& criteria) : criteria_(criteria) {

@@ -58,7 +58,7 @@ std::string instability_cause(const ParticleProbe& nearest) {
 std::string fast_particle_message(const ParticleProbe& fastest, long long dem_step) {
   char text[600];
   std::snprintf(text, sizeof text,
-                "fix lbm/pore: particle %d moves %.3g cells per fluid step at DEM step %lld (limit %.2f): "
+                "particle %d moves %.3g cells per fluid step at DEM step %lld (limit %.2f): "
                 "the fluid cannot follow it. Likely cause: a contact too stiff for the DEM step, or "
                 "n_dem too large for this speed; lower n_dem or the time step",
                 fastest.id, fastest.value, dem_step, kMaxShiftPerFluidStep);

@@ -170,6 +170,11 @@ void PoreMonitor::write_bursts_to(const std::string& path, const BurstUnits& uni
   burst_file_ = std::make_unique<BurstFileWriter>(path, units, append);
 }
 
+double PoreMonitor::burst_value(int row, int column) const {
+  if (row < 0 || row >= int(bursts_.size()) || column < 0 || column >= BurstRecord::kColumns) return 0.0;
+  return bursts_[std::size_t(row)].row()[std::size_t(column)];
+}
+
 std::vector<double> PoreMonitor::state() const {
   std::vector<double> state{double(kCount)};
   state.insert(state.end(), values_.begin(), values_.end());

@@ -4,15 +4,26 @@
 
 namespace coupling {
 
-void RunTimer::start(double now) {
-  *this = RunTimer{};
-  start_ = now;
+void RunTimer::start() {
+  *this = RunTimer(clock_);
+  start_ = mark_ = clock_();
 }
 
-std::string RunTimer::report(double now, const StageTimes& t, const HaloCounts* halo) const {
+int RunTimer::switch_to(int part) {
+  const double now = clock_();
+  if (current_ != kRest) seconds_[current_] += now - mark_;
+  mark_ = now;
+  const int left = current_;
+  current_ = part;
+  return left;
+}
+
+std::string RunTimer::report(const SphereCoupling& coupling) const {
   if (fluid_steps_ == 0) return "";
-  const double total = now - start_;
-  const double coupling = t.mapping + t.refill + t.moving_walls + t.force;
+  const StageTimes& t = coupling.times();
+  const HaloCounts& halo = coupling.halo_counts();
+  const double total = clock_() - start_;
+  const double stages = t.mapping + t.refill + t.moving_walls + t.force;
   const double* s = seconds_;
   char text[1000];
   const int n = std::snprintf(
@@ -20,7 +31,7 @@ std::string RunTimer::report(double now, const StageTimes& t, const HaloCounts* 
       "fix lbm/pore: %lld fluid steps in %.3f s: fluid %.3f s (of which mapping, refill, "
       "moving walls and force %.3f s since the lattice was built), lubrication %.3f s, "
       "diagnostics %.3f s, DEM and the rest %.3f s; %.3g s per fluid step\n",
-      fluid_steps_, total, s[kFluid], coupling, s[kLubrication], s[kDiagnostics],
+      fluid_steps_, total, s[kFluid], stages, s[kLubrication], s[kDiagnostics],
       total - s[kFluid] - s[kLubrication] - s[kDiagnostics], total / double(fluid_steps_));
   const int m = std::snprintf(
       text + n, sizeof text - n,
@@ -29,12 +40,12 @@ std::string RunTimer::report(double now, const StageTimes& t, const HaloCounts* 
       "faces %.3f s, collide-stream %.3f s\n",
       t.mapping, t.refill, t.halo, t.static_walls, t.moving_walls, t.force, t.open_boundaries,
       t.collide_stream);
-  if (halo && halo->steps > 0)
+  if (halo.steps > 0)
     std::snprintf(text + n + m, sizeof text - n - m,
                   "fix lbm/pore: halo exchange of the coupled steps: the 5 populations crossing "
                   "each face, and the ghost nodes' moments (for Mei-Luo-Shyy) along x, y, z in "
                   "%lld, %lld, %lld of %lld steps\n",
-                  halo->moments[0], halo->moments[1], halo->moments[2], halo->steps);
+                  halo.moments[0], halo.moments[1], halo.moments[2], halo.steps);
   return text;
 }
 

@@ -2,23 +2,10 @@
 
 #include <cmath>
 
+#include "coupling/stage_clock.h"
 #include "lbm/input_error.h"
 
 namespace coupling {
-
-namespace {
-class StageTimer {
- public:
-  explicit StageTimer(double& total) : total_(total), start_(std::chrono::steady_clock::now()) {}
-  ~StageTimer() {
-    total_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  }
-
- private:
-  double& total_;
-  std::chrono::steady_clock::time_point start_;
-};
-}  // namespace
 
 SphereCoupling::SphereCoupling(lbm::FluidSolver& solver, const SphereCouplingOptions& options)
     : solver_(solver),

@@ -1,5 +1,6 @@
 #include "coupling/unit_conversion.h"
 
+#include <cmath>
 #include <cstdio>
 
 #include "lbm/input_error.h"
@@ -33,6 +34,13 @@ UnitConversion::UnitConversion(const UnitInputs& in, double tau_max) : in_(in) {
         ", dt_lbm = n_dem * timestep = " + number(dt_lbm_) + ", dx = " + number(in.dx) +
         "): must be in (0.5, " + number(tau_max) +
         "]; change nu, dx, n_dem or the timestep (tau = 1 at dt_lbm = dx^2 / (6 nu))");
+}
+
+void UnitConversion::check_same_tau(const UnitConversion& later) const {
+  if (std::abs(later.tau() - tau_) > 1e-12)
+    throw lbm::InputError("the DEM time step or n_dem changed between runs (tau " + std::to_string(tau_) +
+                          " -> " + std::to_string(later.tau()) +
+                          "); the fluid's relaxation time is fixed once the lattice exists");
 }
 
 std::string UnitConversion::summary() const {

@@ -25,6 +25,12 @@ class Communicator {
   void sum(long long* values, int count) const;
   void max(double* values, int count) const;
   double sum(double value) const { sum(&value, 1); return value; }
+  // The largest of the ranks' values and the lowest rank that holds it (MPI_MAXLOC).
+  struct Location {
+    double value;
+    int rank;
+  };
+  Location max_location(double value) const;
   // Send `send_count` doubles to `dest` and receive `recv_count` from `source` (tag shared).
   // A rank may be its own source/destination (periodic direction on one rank).
   void sendrecv(const double* send, int send_count, int dest, double* recv, int recv_count,

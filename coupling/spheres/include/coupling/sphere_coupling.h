@@ -2,8 +2,6 @@
 // One coupled fluid step with resolved moving spheres, as a named pipeline of stages
 // (waLBerla's time loop): map -> refill -> exchange_halo -> static walls -> moving walls
 // with the link mass correction -> momentum exchange -> open boundaries -> collide_stream.
-#include <chrono>
-
 #include "coupling/boundary/ghost_moment_cells.h"
 #include "coupling/boundary/sphere_links.h"
 #include "coupling/boundary/whole_ghost_axes.h"
@@ -28,7 +26,8 @@ struct SphereCouplingOptions {
   bool conserve_link_mass = true;
 };
 
-// Wall-clock seconds spent in each stage, accumulated over steps.
+// Wall-clock seconds spent in each stage, accumulated over steps (coupling/stage_clock.h, the
+// clock a host's RunTimer reads too).
 struct StageTimes {
   double mapping = 0.0, refill = 0.0, halo = 0.0, static_walls = 0.0, moving_walls = 0.0,
          force = 0.0, open_boundaries = 0.0, collide_stream = 0.0;

@@ -44,9 +44,25 @@ class UnitConversion {
   // One lattice unit of force: rho dx^4 / dt^2; of pressure: rho dx^2 / dt^2.
   double force_unit() const { return in_.rho * in_.dx * in_.dx * in_.dx * in_.dx / (dt_lbm_ * dt_lbm_); }
   double pressure_unit() const { return in_.rho * in_.dx * in_.dx / (dt_lbm_ * dt_lbm_); }
+  // One lattice unit of torque: a force unit times dx.
+  double torque_unit() const { return force_unit() * in_.dx; }
+  // One lattice unit of a force-velocity coefficient (the coupling's C, force per velocity):
+  // a force unit over a velocity unit, force_unit dt / dx.
+  double velocity_coefficient_unit() const { return force_unit() * dt_lbm_ / in_.dx; }
+
+  // For a host that converts whole arrays (every particle at every fluid step), one factor
+  // to multiply each value by: velocity -> lattice, dt / dx (v * factor may differ from
+  // velocity_to_lattice(v) in the last bit); angular velocity -> lattice (radians per fluid
+  // step), dt.
+  double velocity_to_lattice_factor() const { return dt_lbm_ / in_.dx; }
+  double angular_velocity_to_lattice_factor() const { return dt_lbm_; }
 
   // A one-line summary for the setup printout (tau, nu, time steps).
   std::string summary() const;
+
+  // The fluid's relaxation time is fixed once its lattice exists: throws lbm::InputError
+  // when `later` (a later run's time step or n_dem) gives another tau than this.
+  void check_same_tau(const UnitConversion& later) const;
 
  private:
   UnitInputs in_;

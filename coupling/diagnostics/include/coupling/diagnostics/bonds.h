@@ -23,4 +23,10 @@ bool within_adhesion_range(double distance, double radius);
 bool adheres_to_wall(const contact::VoxelSurface& surface, const Vec3& x, double radius,
                      std::vector<contact::SurfacePoint>& scratch);
 
+// Either of the two: from the particle's nearest wall where the host searched it this fluid
+// step over at least the adhesion range (`followed`, e.g. for the lubrication), else by a
+// search of the voxel surface (`followed` null).
+bool touches_wall(const NearestWall* followed, const contact::VoxelSurface& surface, const Vec3& x,
+                  double radius, std::vector<contact::SurfacePoint>& scratch);
+
 }  // namespace coupling

@@ -81,6 +81,11 @@ struct BurstRecord {
   static constexpr int kColumns = 13;
   // The record as kColumns numbers, in the order above (a row of the fix's array).
   std::vector<double> row() const;
+  // One line, ending in a newline, for a host to announce the burst as it is recorded:
+  // "erosive burst: the pressure loss fell from <peak> to <after> P_out (<drop> %) within
+  // <duration> time units after step <step>; <before> deposited particles before, <after>
+  // after".
+  std::string announcement() const;
 };
 
 class BurstDetector {

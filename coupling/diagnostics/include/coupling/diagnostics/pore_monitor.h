@@ -121,6 +121,9 @@ class PoreMonitor {
   std::optional<BurstRecord> record_fluid_step(const lbm::FluidSolver& solver, long long fluid_step,
                                                long long step, double time);
   const std::vector<BurstRecord>& bursts() const { return bursts_; }
+  // Column `column` of burst `row` (BurstRecord::row), 0 outside the bursts recorded: a
+  // host's table of bursts, read at any row and column.
+  double burst_value(int row, int column) const;
   // Rank 0 of a host: write each burst to `path` (header with these unit names), appending
   // to it when the run was resumed from a restart. Throws std::runtime_error naming the file
   // when it cannot be opened.

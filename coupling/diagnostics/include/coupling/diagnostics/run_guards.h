@@ -1,0 +1,36 @@
+#pragma once
+// The run-time guards a host runs at its fluid steps, collective over the solver's ranks: a
+// particle faster than the lattice can follow, and a fluid node that is not finite or runs
+// away. A verdict is the same on every rank (stop or go on); the rank that found the problem
+// also holds the message, so the host can let that rank write it before every rank stops
+// (one message, from where the problem is, instead of a hang or one message per rank).
+#include <string>
+
+#include "coupling/particle_view.h"
+#include "lbm/communicator.h"
+#include "lbm/fluid_solver.h"
+
+namespace coupling {
+
+struct GuardVerdict {
+  bool stop = false;        // alike on every rank
+  bool found_here = false;  // this rank found the problem and holds the message
+  std::string message;      // what, where and the likely cause (the host adds its name)
+  double value = 0.0;       // the particle guard's largest shift over the ranks (cells per step)
+};
+
+// The fastest owned particle of every rank's view (lattice units, the view of the fluid step)
+// against kMaxShiftPerFluidStep (particle_probes.h).
+GuardVerdict particle_speed_guard(const ParticleView& view, long long dem_step, const lbm::Communicator& comm);
+
+// A fluid faster than this (lattice units) has run away: far above what a drive may ask
+// (lbm::kMaxLatticeSpeed) and close to the speed of sound, 0.577, where the scheme fails.
+constexpr double kRunawayFluidSpeed = 0.5;
+
+// A node of any rank that is not finite, has a non-positive density or a speed above
+// kRunawayFluidSpeed (lbm::check_fluid_state); the message names the DEM and fluid steps,
+// the node, the particle of `view` nearest to it and the likely cause.
+GuardVerdict fluid_state_guard(const lbm::FluidSolver& solver, const ParticleView& view, long long dem_step,
+                               long long fluid_step);
+
+}  // namespace coupling

@@ -1,0 +1,58 @@
+// The run-time guards (coupling/diagnostics/run_guards.h) on one rank: a particle faster
+// than half a cell per fluid step stops the run with its message here, a NaN node likewise
+// with the node and the nearest particle; a wall followed or searched (bonds.h).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "cases/serial_flow.h"
+#include "coupling/diagnostics/bonds.h"
+#include "coupling/diagnostics/run_guards.h"
+
+using namespace coupling;
+
+TEST(RunGuards, AParticleFasterThanHalfACellPerStepStopsTheRun) {
+  ParticleSet particles;
+  particles.add(4, {2.0, 2.0, 2.0}, {0.3, 0.0, 0.0}, 1.0);
+  GuardVerdict verdict = particle_speed_guard(particles.view(), 700, lbm::Communicator());
+  EXPECT_FALSE(verdict.stop);
+  EXPECT_DOUBLE_EQ(verdict.value, 0.3);
+  particles.set_velocity(0, {0.0, 0.6, 0.0});
+  verdict = particle_speed_guard(particles.view(), 700, lbm::Communicator());
+  EXPECT_TRUE(verdict.stop);
+  EXPECT_TRUE(verdict.found_here);
+  EXPECT_DOUBLE_EQ(verdict.value, 0.6);
+  EXPECT_EQ(verdict.message.find("particle 4 moves 0.6 cells per fluid step at DEM step 700"), 0u)
+      << verdict.message;
+}
+
+TEST(RunGuards, ANanNodeStopsTheRunNamingTheStepsTheNodeAndTheNearestParticle) {
+  auto solver = cases::make_solver({8, 8, 8}, {true, true, true});
+  ParticleSet particles;
+  particles.add(9, {2.0, 2.0, 2.0}, {0.0, 0.0, 0.0}, 1.0);
+  EXPECT_FALSE(fluid_state_guard(*solver, particles.view(), 100, 1).stop);
+  solver->populations().at(1, solver->layout().cell(3, 2, 2)) = std::nan("");
+  const GuardVerdict verdict = fluid_state_guard(*solver, particles.view(), 300, 3);
+  EXPECT_TRUE(verdict.stop);
+  EXPECT_TRUE(verdict.found_here);
+  EXPECT_EQ(verdict.message.find("fluid became unstable at DEM step 300 (fluid step 3), node (3,2,2)"), 0u)
+      << verdict.message;
+  EXPECT_NE(verdict.message.find("nearest particle 9"), std::string::npos) << verdict.message;
+}
+
+TEST(Bonds, AParticleTouchesTheWallFromItsFollowedNearestWallOrBySearch) {
+  lbm::VoxelGeometry g({8, 8, 8});
+  for (int j = 0; j < 8; ++j)
+    for (int k = 0; k < 8; ++k) g.set_solid(0, j, k, true);  // the plane x = 0
+  const contact::VoxelSurface surface(g);
+  std::vector<contact::SurfacePoint> scratch;
+  NearestWall followed;
+  followed.known = true;
+  followed.distance = 1.02;  // within 1.03 R of a particle of radius 1
+  EXPECT_TRUE(touches_wall(&followed, surface, {6.0, 4.0, 4.0}, 1.0, scratch));  // the followed one decides
+  followed.known = false;
+  EXPECT_FALSE(touches_wall(&followed, surface, {1.5, 4.0, 4.0}, 1.0, scratch));
+  EXPECT_TRUE(touches_wall(nullptr, surface, {1.0, 4.0, 4.0}, 1.0, scratch));  // searched
+  EXPECT_FALSE(touches_wall(nullptr, surface, {6.0, 4.0, 4.0}, 1.0, scratch));
+}
