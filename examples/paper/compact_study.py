@@ -49,7 +49,7 @@ def compact(study, dest, every=10):
         names = [c for c in COLUMNS if c in columns]
         peaks = [b["step"] for b in study_io.bursts(run)]
         steps = columns["Step"]
-        near = lambda s: any(abs(s - p) <= 2e5 for p in peaks)  # noqa: E731
+        near = lambda s: any(abs(s - p) <= 5e4 for p in peaks)  # noqa: E731
         with open(os.path.join(out, "thermo.csv"), "w", newline="") as f:
             w = csv.writer(f)
             w.writerow(names)
