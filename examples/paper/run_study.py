@@ -61,7 +61,7 @@ def restart_knobs(knobs, restart_every=None):
     """The knobs that make a run resumable: restart files every restart_every fluid steps
     (default 1/50 of the run, at least one fluid step), as DEM steps (a multiple of the DEM
     steps per fluid step, so the continuation is exact), and the two checkpoints they name."""
-    n_dem = studies.dem_steps_per_fluid_step(knobs["cells_per_d"])
+    n_dem = studies.run_dem_steps_per_fluid_step(knobs)
     fluid_steps = (int(knobs["steps"]) + int(knobs["warmup"])) // n_dem
     every = restart_every if restart_every else max(1, fluid_steps // 50)
     return dict(knobs, restart_every=every * n_dem, checkpoint_keep=2)

@@ -47,10 +47,15 @@ N_DEM = 100  # DEM steps per fluid step at the paper's resolution (in.pore's n_d
 PAPER_CELLS_PER_D = 7.1
 
 
-def dem_steps_per_fluid_step(cells_per_d):
+def dem_steps_per_fluid_step(cells_per_d, n_dem=N_DEM):
     """in.pore's n_dem_used: the fluid step is 7.1 / cells_per_d of the paper's (acoustic
-    scaling), the DEM step stays the paper's."""
-    return int(math.floor(N_DEM * PAPER_CELLS_PER_D / float(cells_per_d) + 0.5))
+    scaling), the DEM step stays 1 / n_dem of the paper's fluid step."""
+    return int(math.floor(float(n_dem) * PAPER_CELLS_PER_D / float(cells_per_d) + 0.5))
+
+
+def run_dem_steps_per_fluid_step(knobs):
+    """dem_steps_per_fluid_step of a run's knobs (in.pore's n_dem knob, N_DEM if not set)."""
+    return dem_steps_per_fluid_step(knobs["cells_per_d"], knobs.get("n_dem", N_DEM))
 
 
 def cells(length, cells_per_d):
@@ -76,7 +81,7 @@ def core_hours(runs, ranks_per_run=1):
     more ranks costs about the same core-hours, a little more for the halo exchange)."""
     total = 0.0
     for _, knobs in runs:
-        n_dem = dem_steps_per_fluid_step(knobs["cells_per_d"])
+        n_dem = run_dem_steps_per_fluid_step(knobs)
         fluid_steps = (int(knobs["steps"]) + int(knobs["warmup"])) / n_dem
         total += fluid_steps * lattice_cells(knobs) * CORE_SECONDS_PER_CELL_STEP
     return total / 3600.0
@@ -186,12 +191,25 @@ def pvpflux(size):
                                thermo_extra="f_pore[3] f_pore[13]")) for p in pressures]
 
 
+def with_n_dem(knobs, n_dem):
+    """The same run with n_dem DEM steps per fluid step instead of N_DEM: the DEM step is
+    N_DEM / n_dem times longer, so the DEM step counts (run length, warm-up, thermo interval)
+    shrink by n_dem / N_DEM for the same physical time and the same thermo rows."""
+    out = dict(knobs, n_dem=n_dem)
+    for key in ("steps", "warmup", "thermo_every"):
+        out[key] = int(knobs[key]) * n_dem // N_DEM
+    return out
+
+
 def calibration(size):
     """The inlet velocity, which the paper does not give: the table's scene at the paper's
     resolution, u_lattice from 0.02 down, two seeds each (seed-major order, so that a study
     cut short has every velocity once). Thermo rows every 10 fluid steps with the wall's
     force along the flow (f_walls[2]) and the fluid's on the particles (f_pore[14]), to read
-    the hold at each pressure peak. quick: 2 x 10^5 fluid steps per run; paper: 10^6."""
+    the hold at each pressure peak. quick: 2 x 10^5 fluid steps per run; paper: 10^6.
+    Beside them (quick and paper), the runs at u_lattice 0.005 again with N_DEM = 20 DEM
+    substeps per fluid step instead of 100 (names ending in _n_dem_20): whether the
+    statistics depend on N_DEM, which the paper sets for stability and cost only."""
     velocities = _counts(size, [0.02, 0.005], [0.02, 0.01, 0.005, 0.0025], [0.02, 0.01, 0.005, 0.0025])
     seeds = _seeds(_counts(size, 1, 2, 2))
     lengths = {"tiny": {}, "quick": dict(cells_per_d=7.1, steps=20000000, warmup=200000),
@@ -204,6 +222,10 @@ def calibration(size):
             if size != "tiny":
                 knobs["thermo_every"] = 1000
             runs.append((f"u_{u:g}_seed_{seed}", knobs))
+    for seed in seeds:
+        for u in _counts(size, [], [0.005], [0.005]):
+            knobs = dict(next(k for name, k in runs if name == f"u_{u:g}_seed_{seed}"))
+            runs.append((f"u_{u:g}_seed_{seed}_n_dem_20", with_n_dem(knobs, 20)))
     return runs
 
 

@@ -55,6 +55,9 @@ FluidSolver::FluidSolver(const VoxelGeometry& geometry, const FluidParameters& p
   build_node_types();
   build_wall_links();
   kernel_spans_ = spans_without_solid(layout_, node_type_.data());
+  for (int k = 0; k < layout_.size(2); ++k)
+    for (int j = 0; j < layout_.size(1); ++j)
+      for (int i = 0; i < layout_.size(0); ++i) updated_cells_ += node_type_[layout_.cell(i, j, k)] != kSolid;
   initialise_equilibrium(parameters_.rho0, {0.0, 0.0, 0.0});
 }
 

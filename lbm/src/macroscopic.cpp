@@ -1,5 +1,7 @@
 #include "lbm/macroscopic.h"
 
+#include <algorithm>
+#include <cmath>
 #include <utility>
 #include <vector>
 
@@ -135,6 +137,75 @@ double total_mass(const FluidSolver& solver) {
         if (solver.node_types()[cell] == kFluid) mass += solver.density(cell);
       }
   return solver.decomposition().comm.sum(mass);
+}
+
+namespace {
+// rho and |u|^2 of the slots [0, length) from 19 arrays, one slot at a time across the SIMD
+// lanes (each array read once, front to back): per slot the same additions, in the same
+// order, as FluidSolver::density() and velocity() make (j += c v with c = +-1 is j +- v
+// exactly; c = 0 adds a zero there, which changes at most the sign of a zero sum, and so
+// neither u - F/2 nor |u|^2), and |u|^2 as max_speed() computes it.
+template <int... q>
+void row_moments(const Real* const* f, std::size_t length, const std::array<double, 3>& F,
+                 bool incompressible, double rho0, double* __restrict rho_out,
+                 double* __restrict speed2_out, std::integer_sequence<int, q...>) {
+  using L = D3Q19;
+  for (std::size_t i = 0; i < length; ++i) {
+    double rho = 0.0, j[3] = {0.0, 0.0, 0.0};
+    const auto add = [&](int p, double v) {
+      rho += v;
+      for (int a = 0; a < 3; ++a) {
+        if (L::c[p][a] > 0) j[a] += v;
+        if (L::c[p][a] < 0) j[a] -= v;
+      }
+    };
+    (add(q, f[q][i]), ...);
+    const double r = incompressible ? rho0 : rho;
+    const double u[3] = {(j[0] - 0.5 * F[0]) / r, (j[1] - 0.5 * F[1]) / r, (j[2] - 0.5 * F[2]) / r};
+    rho_out[i] = rho;
+    speed2_out[i] = u[0] * u[0] + u[1] * u[1] + u[2] * u[2];
+  }
+}
+}  // namespace
+
+LatticeTotals lattice_totals(const FluidSolver& solver) {
+  const BlockLayout& g = solver.layout();
+  const PopulationField& f = solver.populations();
+  const std::uint8_t* const type = solver.node_types().data();
+  const int nx = g.size(0), ny = g.size(1);
+  // A plane's owned rows and the padding between them are one stretch of each array.
+  const std::size_t length = g.cell(nx - 1, ny - 1, 0) - g.cell(0, 0, 0) + 1;
+  thread_local std::vector<double> sums;  // rho and |u|^2 of one plane, allocated once
+  sums.resize(2 * length);
+  double* const rho = sums.data();
+  double* const speed2 = rho + length;
+  LatticeTotals out;
+  double largest2 = 0.0;  // the largest |u| is the root of the largest |u|^2 (monotonic)
+  for (int k = 0; k < g.size(2); ++k) {
+    const std::size_t plane = g.cell(0, 0, k);
+    const Real* arrays[D3Q19::Q];
+    for (int q = 0; q < D3Q19::Q; ++q) arrays[q] = f.q(q) + plane;
+    row_moments(arrays, length, solver.parameters().body_force, solver.parameters().incompressible,
+                solver.parameters().rho0, rho, speed2, std::make_integer_sequence<int, D3Q19::Q>{});
+    for (int y = 0; y < ny; ++y) {
+      const std::size_t row = g.cell(0, y, k) - plane;
+      for (int x = 0; x < nx; ++x) {
+        const std::size_t i = row + std::size_t(x);
+        const std::uint8_t t = type[plane + i];
+        out.moving_nodes += t == kMoving;
+        if (t != kFluid) continue;
+        out.mass += rho[i];
+        if (rho[i] > 0.0) largest2 = std::max(largest2, speed2[i]);  // velocity() gives 0 else
+      }
+    }
+  }
+  out.max_speed = std::sqrt(largest2);
+  double sums_over_ranks[2] = {out.mass, double(out.moving_nodes)};
+  solver.decomposition().comm.sum(sums_over_ranks, 2);
+  out.mass = sums_over_ranks[0];
+  out.moving_nodes = static_cast<long long>(sums_over_ranks[1]);
+  solver.decomposition().comm.max(&out.max_speed, 1);
+  return out;
 }
 
 // Both planes in one reduction (it runs every fluid step, for the burst detector): the

@@ -3,6 +3,7 @@
 // own stage times; the stage timer adds its seconds (coupling/stage_clock.h).
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <string>
 
 #include "cases/serial_flow.h"
@@ -65,6 +66,33 @@ TEST(RunTimer, TheReportReadsTheCouplingsStageTimes) {
   EXPECT_NE(report.find("coupling stages since the lattice was built: mapping 0.000 s"), std::string::npos)
       << report;
   EXPECT_EQ(report.find("halo exchange of the coupled steps"), std::string::npos);  // none counted
+}
+
+// The fourth line counts the links the coupling applied per step, as the links of the step
+// are: a sphere at rest keeps the same links every step.
+TEST(RunTimer, TheReportCountsTheLinksPerStep) {
+  auto solver = cases::make_solver({16, 16, 16}, {true, true, true});
+  coupling::SphereCoupling coupling(*solver);
+  coupling::ParticleSet particles;
+  particles.add(1, {8.2, 7.9, 8.4}, {0, 0, 0}, 3.5);
+  RunTimer timer(test_clock);
+  timer.start();
+  for (int step = 0; step < 3; ++step) {
+    coupling.step(particles.view());
+    timer.count_fluid_step();
+  }
+  const auto& links = coupling.links().links;
+  ASSERT_GT(links.size(), 100u);  // a sphere of radius 3.5 cells: several hundred links
+  EXPECT_EQ(coupling.link_counts().steps, 3);
+  EXPECT_EQ(coupling.link_counts().links, 3 * static_cast<long long>(links.size()));
+  char expected[200];
+  std::snprintf(expected, sizeof expected,
+                "fix lbm/pore: links of the moving surfaces on this rank: %zu per fluid step;",
+                links.size());
+  const std::string report = timer.report(coupling);
+  EXPECT_NE(report.find(expected), std::string::npos) << report;
+  EXPECT_NE(report.find("fluid-cell updates per link (collide-stream"), std::string::npos) << report;
+  EXPECT_NE(report.find("of 4096 cells)"), std::string::npos) << report;  // 16^3, no walls
 }
 
 TEST(StageClock, AStageTimerAddsItsSecondsToItsTotal) {

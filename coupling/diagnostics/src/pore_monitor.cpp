@@ -90,24 +90,12 @@ void PoreMonitor::update_fluid(const lbm::FluidSolver& solver, long long fluid_s
   const int last = solver.decomposition().global.size(setup_.pore.axis) - 1;
   v[kFluidFluxInlet] = lbm::plane_flux(solver, setup_.pore.axis, 0) * flux_unit;
   v[kFluidFluxOutlet] = lbm::plane_flux(solver, setup_.pore.axis, last) * flux_unit;
-  const double speed = lbm::max_speed(solver);
-  v[kMaxFluidSpeed] = units_.velocity_to_physical(speed);
-  v[kLatticeMach] = speed / lbm::kSoundSpeed;
+  const lbm::LatticeTotals totals = lbm::lattice_totals(solver);
+  v[kMaxFluidSpeed] = units_.velocity_to_physical(totals.max_speed);
+  v[kLatticeMach] = totals.max_speed / lbm::kSoundSpeed;
   v[kFluidSteps] = double(fluid_steps);
-  v[kFluidMassHeld] = lbm::total_mass(solver) / solver.parameters().rho0 * fluid_mass_unit();
-  v[kParticleDisplacedMass] = double(owned_moving_nodes(solver)) * fluid_mass_unit();
-}
-
-// Nodes covered by particles, over all ranks (each counts the nodes it owns).
-long long PoreMonitor::owned_moving_nodes(const lbm::FluidSolver& solver) {
-  const lbm::BlockLayout& g = solver.layout();
-  long long count = 0;
-  for (int k = 0; k < g.size(2); ++k)
-    for (int j = 0; j < g.size(1); ++j)
-      for (int i = 0; i < g.size(0); ++i)
-        if (solver.node_types()[g.cell(i, j, k)] == lbm::kMoving) ++count;
-  solver.decomposition().comm.sum(&count, 1);
-  return count;
+  v[kFluidMassHeld] = totals.mass / solver.parameters().rho0 * fluid_mass_unit();
+  v[kParticleDisplacedMass] = double(totals.moving_nodes) * fluid_mass_unit();
 }
 
 // Host mass of one lattice cell of fluid at the reference density.

@@ -25,7 +25,7 @@ std::string RunTimer::report(const SphereCoupling& coupling) const {
   const double total = clock_() - start_;
   const double stages = t.mapping + t.refill + t.moving_walls + t.force;
   const double* s = seconds_;
-  char text[1000];
+  char text[1600];
   const int n = std::snprintf(
       text, sizeof text,
       "fix lbm/pore: %lld fluid steps in %.3f s: fluid %.3f s (of which mapping, refill, "
@@ -40,12 +40,27 @@ std::string RunTimer::report(const SphereCoupling& coupling) const {
       "faces %.3f s, collide-stream %.3f s\n",
       t.mapping, t.refill, t.halo, t.static_walls, t.moving_walls, t.force, t.open_boundaries,
       t.collide_stream);
+  int used = n + m;
   if (halo.steps > 0)
-    std::snprintf(text + n + m, sizeof text - n - m,
-                  "fix lbm/pore: halo exchange of the coupled steps: the 5 populations crossing "
-                  "each face, and the ghost nodes' moments (for Mei-Luo-Shyy) along x, y, z in "
-                  "%lld, %lld, %lld of %lld steps\n",
-                  halo.moments[0], halo.moments[1], halo.moments[2], halo.steps);
+    used += std::snprintf(text + used, sizeof text - used,
+                          "fix lbm/pore: halo exchange of the coupled steps: the 5 populations "
+                          "crossing each face, and the ghost nodes' moments (for Mei-Luo-Shyy) "
+                          "along x, y, z in %lld, %lld, %lld of %lld steps\n",
+                          halo.moments[0], halo.moments[1], halo.moments[2], halo.steps);
+  const LinkCounts& links = coupling.link_counts();
+  const double cells = double(coupling.solver().updated_cells());
+  if (links.steps > 0 && links.links > 0 && t.collide_stream > 0.0 && cells > 0.0) {
+    // The coupling's cost per link in the unit of the fluid's own work: a link costs as
+    // much as this many cell updates of the same run's collide-stream.
+    const double per_link = stages / double(links.links);
+    const double per_update = t.collide_stream / (double(links.steps) * cells);
+    std::snprintf(text + used, sizeof text - used,
+                  "fix lbm/pore: links of the moving surfaces on this rank: %.0f per fluid step; "
+                  "mapping, refill, moving walls and force %.1f ns per link, %.2f fluid-cell "
+                  "updates per link (collide-stream %.2f ns per update of %.0f cells)\n",
+                  double(links.links) / double(links.steps), 1e9 * per_link,
+                  per_link / per_update, 1e9 * per_update, cells);
+  }
   return text;
 }
 

@@ -100,6 +100,8 @@ void SphereCoupling::apply_moving_walls_and_force(const ParticleView& view) {
     surface_mass_ = lbm::moving_wall::moving_surface_mass(links_.links, rho0) +
                     (conserve ? 0.0 : link_defect_.net);
   }
+  ++link_counts_.steps;
+  link_counts_.links += static_cast<long long>(links_.links.size());
   StageTimer t(times_.force);
   loads_.reset(view.num_total);
   add_momentum_exchange(links_, link_populations_, options_.momentum_exchange, rho0, loads_,

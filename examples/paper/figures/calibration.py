@@ -49,7 +49,7 @@ def inlet_rate_ratio(run, columns):
 def run_row(run):
     columns = thermo(run["folder"])
     row = dict(name=run["name"], u=float(run["knobs"]["u_lattice"]), seed=run["knobs"]["seed"],
-               state=run["state"], reason=run.get("reason", ""))
+               n_dem=int(run["knobs"].get("n_dem", 100)), state=run["state"], reason=run.get("reason", ""))
     if "pore[16]" not in columns:
         return row, columns
     steps = np.asarray(columns["Step"], float)
@@ -79,17 +79,17 @@ def stop_reason(error):
 
 
 def table(rows):
-    lines = ["| run | u_lattice | ended | fluid steps | largest deposit (count, V_dep [d^3]) | P_0 | P_max "
+    lines = ["| run | u_lattice | N_DEM | ended | fluid steps | largest deposit (count, V_dep [d^3]) | P_0 | P_max "
              "| bursts (P_peak: deposited) | wall hold / (P pi D^2/4) at peaks, median | max Mach "
              "| inlet rate / c_in u_in W^2 / V_p |",
-             "|---|---|---|---|---|---|---|---|---|---|---|"]
+             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         if "fluid_steps" not in r:
-            lines.append(f"| {r['name']} | {r['u']:g} | {r['state']} | - | - | - | - | - | - | - | - |")
+            lines.append(f"| {r['name']} | {r['u']:g} | {r['n_dem']} | {r['state']} | - | - | - | - | - | - | - | - |")
             continue
         ended = r["state"] if r["state"] != "failed" else "stopped: " + stop_reason(r["reason"])
         peaks = ", ".join(f"{p:.2f}: {c}" for p, c in r["peaks"][:8]) + (" ..." if len(r["peaks"]) > 8 else "")
-        lines.append(f"| {r['name']} | {r['u']:g} | {ended} | {r['fluid_steps']} | {r['count']}, {r['V_dep']:.2f} "
+        lines.append(f"| {r['name']} | {r['u']:g} | {r['n_dem']} | {ended} | {r['fluid_steps']} | {r['count']}, {r['V_dep']:.2f} "
                      f"| {r['P0']:.3f} | {r['P_max']:.3f} | {r['bursts']} ({peaks or 'none'}) "
                      f"| {r['hold']:.2f} | {r['mach']:.3f} | {r['inlet']:.2f} |")
     return "\n".join(lines)
@@ -108,7 +108,8 @@ def analyze(summary, out_dir):
             continue
         n_dem = lattice_timing(runs[k]["folder"])["n_dem"]
         t = np.asarray(columns["Step"], float) / n_dem
-        axes[0].plot(t, columns["pore[16]"], lw=0.7, label=f"u {row['u']:g}, seed {row['seed']}")
+        axes[0].plot(t, columns["pore[16]"], lw=0.7, label=f"u {row['u']:g}, seed {row['seed']}"
+                     + (f", N_DEM {row['n_dem']}" if row["n_dem"] != 100 else ""))
         axes[1].plot(t, columns["pore[7]"], lw=0.7)
     axes[0].axhspan(*CRITERION_P, color="0.9", zorder=0)
     axes[0].set_ylabel("P [P_out]")
@@ -120,7 +121,9 @@ def analyze(summary, out_dir):
     text = table(rows)
     with open(os.path.join(out_dir, "calibration.md"), "w") as f:
         f.write(text + "\n")
-    qualifying = sorted({r["u"] for r in rows if r.get("qualifying") and r["state"] == "done"})
+    # The default velocity is chosen at the paper's N_DEM; the N_DEM = 20 runs only compare.
+    qualifying = sorted({r["u"] for r in rows if r.get("qualifying") and r["state"] == "done"
+                         and r["n_dem"] == 100})
     choice = f"u_lattice {max(qualifying):g}" if qualifying else "none of the runs qualifies yet"
     return result(summary, "calibration", "the largest u_lattice whose bursts carry >= 15 deposited "
                   "particles at 0.3-0.6 P_out and whose runs reach their end",

@@ -126,6 +126,10 @@ class FluidSolver {
   // Storage that grows with the wall surface (bounce-back link lists, halo buffers) is not
   // in it. About 153 bytes in double precision, 77 in single.
   double bytes_per_node() const;
+  // The owned cells that are not static walls: the lattice updates of one collide_stream on
+  // this rank (as MLUPS count them; the kernel also sweeps row padding), the unit of the
+  // "fluid-cell updates" in which the coupling's cost is counted.
+  std::size_t updated_cells() const { return updated_cells_; }
 
   // Macroscopic values at a local cell, from the stored post-collision populations:
   // rho = sum f, rho u = sum c f - F/2 (the Guo forcing shift undone).
@@ -160,6 +164,7 @@ class FluidSolver {
   // only the bounce-back above writes and reads (spans_without_solid). Built from the
   // node types with the wall links, which assume the same static walls.
   std::vector<KernelSpan> kernel_spans_;
+  std::size_t updated_cells_ = 0;
   std::unique_ptr<HaloExchange> halo_;
   long long time_step_ = 0;
 };

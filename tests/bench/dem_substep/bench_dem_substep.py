@@ -16,7 +16,7 @@ smooth, stock, ...), --repeat rounds; the ratio of each round, then the median a
 (min, max).
 
 Prints `BENCH <name> <value> <unit>` lines:
-  BENCH dem_substep_ratio <median>          lbm / stock per substep (goal <= 1.3)
+  BENCH dem_substep_ratio <median>          lbm / stock per substep (goal <= 1.5)
   BENCH dem_substep_ratio_min / _max        spread over the rounds
   BENCH dem_substep_ratio_smooth[_min|_max] smooth / stock
   BENCH dem_substep_<case>_us               microseconds per substep (medians)

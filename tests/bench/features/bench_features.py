@@ -7,7 +7,7 @@ Prints `BENCH <name> <value> <unit>` lines:
   BENCH <feature>_on_vs_off <ratio> ratio   for cohesion (kc 0 / 0.1), adhesion (ka 0 / 0.1),
       friction (mu 0 / 0.1), lubrication (no / yes), fluid_output (vtk 0 / every 10 fluid steps):
       loop time per DEM step with the feature on / off, best of --repeat alternating runs
-  BENCH no_particles_vs_pure_fluid <ratio> ratio   (goal <= 1.05): fix lbm/pore without
+  BENCH no_particles_vs_pure_fluid <ratio> ratio   (goal <= 1.1): fix lbm/pore without
       particles (n_dem 1) against pore_fluid, time per fluid step, each from the difference of a
       short and a long run (setup cancels), pore_fluid run right before
   and the absolute figures (s per DEM step, s per fluid step).
@@ -99,7 +99,7 @@ def main():
     print(f"BENCH pure_fluid_step {pure:.4g} s   ({nodes} nodes, {nodes / pure / 1e6:.2f} MLUPS)")
     print(f"BENCH no_particles_fluid_step {fix:.4g} s   ({nodes / fix / 1e6:.2f} MLUPS; the fix's "
           f"own end-of-run figure {fix_own:.4g} s per fluid step)")
-    print(f"BENCH no_particles_vs_pure_fluid {fix / pure:.3f} ratio   (goal <= 1.05)")
+    print(f"BENCH no_particles_vs_pure_fluid {fix / pure:.3f} ratio   (goal <= 1.1)")
 
 
 if __name__ == "__main__":

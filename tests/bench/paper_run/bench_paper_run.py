@@ -1,109 +1,294 @@
 #!/usr/bin/env python3
-"""bench_paper_run: how long one paper-length run (10^6 fluid steps, N_DEM = 100 DEM substeps
-each) would take on this machine, from a few thousand fluid steps of the paper's scene.
+"""bench_paper_run: how long a paper-length run takes at the particle loads the studies have,
+timed from saved states of the paper's scene rather than from an empty box.
 
-The scene is examples/pore/in.pore at its defaults, which are the paper's (Table I read in
-d-units at 7.1 cells per d): a 90 x 40 x 40 lattice (inlet I = 20, free III = 20, pore IV
-L = 30, outlet II = 20, W = 40 cells), a pore of D = 25 cells, particles of d = 7 cells
-inserted at c_in = 0.05 in region I every 100 fluid steps, inlet velocity 0.02 cells per
-fluid step, N_DEM = 100. It runs on 2 MPI ranks with one OpenMP thread each. The particle-
-free warm-up is one fluid step; the timed figure is fix lbm/pore's own "s per fluid step" of
-the run with particles:
-  fix lbm/pore: N fluid steps in T s: ... ; S s per fluid step
-The ranks split the lattice across the flow (in.pore's -var procs "1 * 1": both ranks hold
-half of every region, so both share the coupling of the particles arriving at the inlet);
-_along_flow is in.pore's default grid ("* 1 1", the inlet's rank does the coupling alone);
-_one_rank_two_threads is one rank with two OpenMP threads (the whole lattice on one rank: no
-halo messages, no rank waiting for the other's particles, the coupling stages split over the
-threads; the DEM runs on one thread).
-The drivers given (--driver for the double-precision build, --single-driver for a
--DLBM_PORE_SINGLE_PRECISION=ON build) run --repeat times, interleaved (double, double along the
-flow, single, double, ...), so that a shared machine's load swings fall on all. Prints the
-median and min-max:
-  BENCH paper_run_fluid_step_s[_along_flow|_one_rank_two_threads|_single|
-  _single_one_rank_two_threads], BENCH paper_run_particles[...],
-  BENCH paper_run_projected_hours[...] (goal <= 0.75 in double precision) with _min, _max.
+The scene is examples/pore/in.pore (Table I read in d-units at 7.1 cells per d: a 90 x 40 x 40
+lattice, a pore of D = 25 cells, particles of d = 7 cells, N_DEM = 100) on 2 MPI ranks with
+one OpenMP thread each, the lattice split across the flow (-var procs "1 * 1": both ranks
+hold half of every region). Two states, each made once by running in.pore and kept (with its
+fluid checkpoints) in --states-dir, then read back for every timed run:
+
+  steady   in.pore's defaults (u_lattice 0.02, c_in 0.05) after 2 x 10^6 DEM steps, as the
+           main example runs: at least 50 particles in the box, deposits in the pore, voxel
+           contacts; continued in steps of 10^5 DEM steps until it holds that load.
+  clogged  u_lattice 0.0025 (where deposits grow to 20-40 particles: doc/calibration.md)
+           after 4 x 10^6 DEM steps, continued until at least 15 particles are deposited in
+           the pore (deposits come and go in bursts: the state is the first such moment).
+
+A state is remade when its files are missing or the driver cannot read them (a restart
+format change); --remake-states forces it. Each timed run resumes a state for
+--fluid-steps fluid steps (N_DEM DEM substeps each); the states are timed in turn, --repeat
+rounds, and the median and spread (min, max) of the rounds are printed. Per state:
+
+  BENCH paper_run_<state>_particles, _deposited      the state's load (count)
+  BENCH paper_run_<state>_fluid_step_ms [_min/_max]  fix lbm/pore's own "s per fluid step"
+  BENCH paper_run_<state>_<part>_ms                  per fluid step: the coupling stages
+        (mapping, refill, halo, static_walls, moving_walls, force, open_faces, collide_stream)
+        and lubrication, diagnostics, dem_and_rest (the DEM substeps and LIGGGHTS's own work)
+  BENCH paper_run_<state>_links_per_step            (rank 0)
+  BENCH paper_run_<state>_ns_per_link                mapping + refill + moving walls + force
+  BENCH paper_run_<state>_coupling_fluid_cell_updates_per_link  the same in collide-stream
+        updates of the same run (goal <= 1)
+  BENCH paper_run_<state>_projected_hours [_min/_max]  10^6 fluid steps at this speed
+  BENCH paper_run_<state>_projected_hours_n_dem_20     the DEM's share (DEM and the rest,
+        lubrication) scaled by 20/100
+  BENCH paper_run_<state>_projected_hours_5_cells_per_d[_n_dem_20]  the same physical time
+        at 5 cells per d (acoustic scaling, in.pore's header: 10^6 x 5/7.1 fluid steps of
+        142 DEM substeps), each part scaled by what it grows with: collide-stream and
+        diagnostics by the cells, (5/7.1)^3; the other coupling stages by the links,
+        (5/7.1)^2; the DEM per fluid step by the substeps, 7.1/5.
+and, for the steady state (the main example's load), the headline figures without the
+state's name: BENCH paper_run_projected_hours (goal <= 0.5) and
+BENCH coupling_fluid_cell_updates_per_link (goal <= 1).
+With --baseline-driver, each timed run is paired with one of that driver right before it
+on the same state: BENCH paper_run_<state>_vs_baseline [_min/_max] is the median of the
+pairs' ratios of the time per fluid step (below 1: --driver is faster).
+The stage and link figures are rank 0's (the end-of-run report of fix lbm/pore); a stage's
+time includes the waits for the other rank at its collective calls.
 
 usage: bench_paper_run.py --driver liggghts-lbm --script examples/pore/in.pore
-                          [--single-driver liggghts-lbm] [--fluid-steps N] [--repeat N]
-                          [--mpirun mpirun]
+                          [--states-dir DIR] [--remake-states] [--fluid-steps N] [--repeat N]
+                          [--mpirun mpirun] [--states steady,clogged]
+                          [--baseline-driver liggghts-lbm]
+(--repeat 0 makes the missing states and times nothing.)
 """
 import argparse
 import os
 import re
+import shutil
 import statistics
 import subprocess
 import sys
 import tempfile
 
-PER_STEP = re.compile(r"fix lbm/pore: (\d+) fluid steps in [\d.eE+-]+ s: .*?; ([\d.eE+-]+) s per fluid step")
 PAPER_STEPS = 1e6
 N_DEM = 100
-SCENE = {"cells_per_d": 7.1, "c_in": 0.05, "n_dem": N_DEM, "vtk_every": 0}
+RANKS = 2
+PROCS = "1 * 1"
+WARMUP = 200000
+CHUNK = 100000  # DEM steps between the restart files of a state's making
+CELLS_PER_D, COARSE_CELLS_PER_D = 7.1, 5.0
+
+# name -> (knobs, first end step, the load it must reach: (particles, deposited))
+STATES = {
+    "steady": ({"u_lattice": 0.02, "c_in": 0.05}, 2000000, (50, 1)),
+    "clogged": ({"u_lattice": 0.0025, "c_in": 0.05}, 4000000, (0, 15)),
+}
+MAX_EXTRA_STEPS = 6000000  # a state that has not reached its load by then is reported as is
+
+RUN_LINE = re.compile(
+    r"fix lbm/pore: (\d+) fluid steps in ([\d.eE+-]+) s: fluid ([\d.eE+-]+) s .*?\), lubrication "
+    r"([\d.eE+-]+) s, diagnostics ([\d.eE+-]+) s, DEM and the rest ([\d.eE+-]+) s; ([\d.eE+-]+) s per fluid step")
+STAGE_LINE = re.compile(r"fix lbm/pore: coupling stages since the lattice was built: (.*)")
+LINK_LINE = re.compile(
+    r"links of the moving surfaces on this rank: ([\d.]+) per fluid step; mapping, refill, moving "
+    r"walls and force ([\d.]+) ns per link, ([\d.]+) fluid-cell updates per link")
+STAGES = ["mapping", "refill", "halo", "static walls", "moving walls", "force", "open faces", "collide-stream"]
+LINK_STAGES = ["mapping", "refill", "moving walls", "force"]
 
 
-def time_run(driver, script, mpirun, fluid_steps, procs, ranks, threads):
-    knobs = dict(SCENE, warmup=N_DEM, steps=fluid_steps * N_DEM, thermo_every=fluid_steps * N_DEM,
-                 procs=procs)
-    cmd = [mpirun, "-np", str(ranks), "--allow-run-as-root", "--oversubscribe"]
-    # mpirun binds each of up to 2 ranks to one core: a rank's threads would share it.
-    if threads > 1:
-        cmd += ["--bind-to", "none"]
-    cmd += [driver, "-in", script]
+def thermo_rows(text):
+    """(step, atoms, deposited) of the thermo rows (in.pore: step atoms f_pore[1] f_pore[6] f_pore[7] ...)."""
+    rows = []
+    for line in text.splitlines():
+        parts = line.split()
+        if len(parts) >= 5 and parts[0].isdigit() and parts[1].isdigit():
+            try:
+                rows.append((int(parts[0]), int(parts[1]), float(parts[4])))
+            except ValueError:
+                pass
+    return rows
+
+
+def run_scene(args, work, knobs, driver=None):
+    cmd = [args.mpirun, "-np", str(RANKS), "--allow-run-as-root", "--oversubscribe",
+           os.path.abspath(driver or args.driver), "-in", os.path.abspath(args.script)]
     for name, value in knobs.items():
         cmd += ["-var", name, str(value)]
-    env = dict(os.environ, OMP_NUM_THREADS=str(threads))
+    env = dict(os.environ, OMP_NUM_THREADS="1")
+    done = subprocess.run(cmd, cwd=work, env=env, capture_output=True, text=True, errors="replace")
+    return done.returncode, done.stdout + done.stderr
+
+
+def scene_knobs(state, end_step, extra):
+    knobs = dict(STATES[state][0], cells_per_d=CELLS_PER_D, n_dem=N_DEM, vtk_every=0, procs=PROCS,
+                 warmup=WARMUP, steps=end_step - WARMUP)
+    knobs.update(extra)
+    return knobs
+
+
+def newest_restart(folder):
+    files = [f for f in ("restart.a", "restart.b") if os.path.exists(os.path.join(folder, f))]
+    return max(files, key=lambda f: os.path.getmtime(os.path.join(folder, f))) if files else None
+
+
+def state_load(folder):
+    """(step, particles, deposited) at the state's last thermo row, from its saved log."""
+    with open(os.path.join(folder, "state.log")) as f:
+        rows = thermo_rows(f.read())
+    return rows[-1] if rows else None
+
+
+def make_state(args, state, folder):
+    """Runs in.pore until the state holds its load; keeps the newest restart file and the
+    fluid checkpoints it names in `folder`."""
+    knobs, end_step, (min_particles, min_deposited) = STATES[state]
+    shutil.rmtree(folder, ignore_errors=True)
+    os.makedirs(folder)
+    extra = {"restart_every": CHUNK, "checkpoint_keep": 2, "thermo_every": CHUNK}
+    print(f"bench_paper_run: making state '{state}' ({knobs}) to DEM step {end_step} in {folder}", flush=True)
+    code, out = run_scene(args, folder, scene_knobs(state, end_step, extra))
+    log = out
+    last = end_step + MAX_EXTRA_STEPS
+    while True:
+        rows = thermo_rows(out)
+        if code != 0 or not rows:
+            print(out[-3000:])
+            sys.exit(f"bench_paper_run: making state '{state}' failed")
+        step, particles, deposited = rows[-1]
+        if (particles >= min_particles and deposited >= min_deposited) or step >= last:
+            break
+        end_step = step + CHUNK
+        resume = dict(extra, resume=1, resume_file=newest_restart(folder))
+        code, out = run_scene(args, folder, scene_knobs(state, end_step, resume))
+        log += out
+    with open(os.path.join(folder, "state.log"), "w") as f:
+        f.write(log)
+    print(f"bench_paper_run: state '{state}' at DEM step {step}: {particles} particles, "
+          f"{deposited:g} deposited", flush=True)
+
+
+def time_state(args, state, folder, driver=None):
+    """One timed run resuming the state (with `driver`, or --driver): fix lbm/pore's report,
+    parsed."""
+    step, _, _ = state_load(folder)
+    restart = newest_restart(folder)
     with tempfile.TemporaryDirectory(prefix="bench_paper_run_") as work:
-        out = subprocess.run(cmd, cwd=work, env=env, capture_output=True, text=True,
-                             errors="replace").stdout
-    runs = PER_STEP.findall(out)
-    atoms = [line.split()[1] for line in out.splitlines() if re.match(r"\s+\d+\s+\d+\s", line)]
-    if len(runs) < 2:
+        for name in os.listdir(folder):
+            if name.startswith("pore.fluid.") or name == restart:
+                os.symlink(os.path.join(folder, name), os.path.join(work, name))
+        steps = args.fluid_steps * N_DEM
+        knobs = scene_knobs(state, step + steps, {"resume": 1, "resume_file": restart,
+                                                  "thermo_every": steps})
+        code, out = run_scene(args, work, knobs, driver)
+    runs = RUN_LINE.findall(out)
+    stages = STAGE_LINE.findall(out)
+    links = LINK_LINE.findall(out)
+    if code != 0 or not runs or not stages:
         print(out[-3000:])
-        sys.exit(f"bench_paper_run: {driver} did not complete both runs")
-    # The timing line of the run with particles: where the step's time goes.
-    lines = [line for line in out.splitlines() if line.startswith("fix lbm/pore:") and "fluid steps in" in line]
-    print(f"bench_paper_run: {lines[-1]}", flush=True)
-    return float(runs[1][1]), (atoms[-1] if atoms else "unknown")
+        return None
+    n, total, _, lubrication, diagnostics, dem, per_step = (float(v) for v in runs[-1])
+    times = {name: float(value) for name, value in
+             re.findall(r"([a-z -]+?) ([\d.eE+-]+) s", stages[-1])}
+    times = {name.strip(): value for name, value in times.items()}
+    result = {"fluid_step_ms": 1e3 * per_step, "lubrication": lubrication / n,
+              "diagnostics": diagnostics / n, "dem_and_rest": dem / n}
+    for name in STAGES:
+        result[name] = times.get(name, 0.0) / n
+    # A driver older than the link report (a before/after comparison) gives no link figures.
+    result["links"], result["ns_per_link"], result["fcu_per_link"] = (
+        (float(v) for v in links[-1]) if links else (float("nan"),) * 3)
+    rows = thermo_rows(out)
+    result["particles"], result["deposited"] = (rows[-1][1], rows[-1][2]) if rows else (0, 0)
+    return result
+
+
+def projections(parts, fluid_step_s):
+    """Hours for the paper's run length at 7.1 and 5 cells per d, N_DEM 100 and 20 (see the
+    module's docstring for the scaling of each part)."""
+    r = COARSE_CELLS_PER_D / CELLS_PER_D
+    dem = parts["dem_and_rest"] + parts["lubrication"]
+    cells = parts["collide-stream"] + parts["diagnostics"]
+    surface = fluid_step_s - dem - cells
+    hours = lambda per_step, steps: per_step * steps / 3600
+    return {
+        "": hours(fluid_step_s, PAPER_STEPS),
+        "_n_dem_20": hours(fluid_step_s - dem * (1 - 20 / N_DEM), PAPER_STEPS),
+        "_5_cells_per_d": hours(cells * r**3 + surface * r**2 + dem / r, PAPER_STEPS * r),
+        "_5_cells_per_d_n_dem_20": hours(cells * r**3 + surface * r**2 + dem / r * 20 / N_DEM,
+                                         PAPER_STEPS * r),
+    }
 
 
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--driver", required=True)
-    parser.add_argument("--single-driver", default="")
     parser.add_argument("--script", required=True)
     parser.add_argument("--mpirun", default="mpirun")
-    parser.add_argument("--fluid-steps", type=int, default=2000)
+    parser.add_argument("--states-dir", default=os.path.join(os.getcwd(), "paper_run_states"))
+    parser.add_argument("--states", default="steady,clogged")
+    parser.add_argument("--remake-states", action="store_true")
+    parser.add_argument("--fluid-steps", type=int, default=1000)
     parser.add_argument("--repeat", type=int, default=3)
+    parser.add_argument("--baseline-driver", default="",
+                        help="another liggghts-lbm (e.g. a build of the code before a change), "
+                             "timed on the same states in pairs with --driver")
     args = parser.parse_args()
-    script = os.path.abspath(args.script)
-    # (suffix, driver, LIGGGHTS processors grid, MPI ranks, OpenMP threads per rank): the
-    # figure is for 2 ranks split across the flow (each rank holds half of every region, so
-    # both do coupling work); _along_flow is in.pore's default grid (the inlet's rank holds
-    # all the arriving particles); _one_rank_two_threads the same two cores as one rank.
-    runs = [("", args.driver, "1 * 1", 2, 1), ("_along_flow", args.driver, "* 1 1", 2, 1),
-            ("_one_rank_two_threads", args.driver, "1 1 1", 1, 2)]
-    if args.single_driver:
-        runs.append(("_single", args.single_driver, "1 * 1", 2, 1))
-        runs.append(("_single_one_rank_two_threads", args.single_driver, "1 1 1", 1, 2))
-    times = {run[0]: [] for run in runs}
-    particles = {}
+    states = [s for s in args.states.split(",") if s]
+    for state in states:
+        if state not in STATES:
+            sys.exit(f"bench_paper_run: unknown state '{state}'; known: {', '.join(STATES)}")
+    folders = {s: os.path.join(os.path.abspath(args.states_dir), s) for s in states}
+    for state, folder in folders.items():
+        if args.remake_states or not os.path.exists(os.path.join(folder, "state.log")):
+            make_state(args, state, folder)
+    if args.repeat <= 0:  # --repeat 0: make the states only
+        return
+    results = {s: [] for s in states}
+    pair_ratios = {s: [] for s in states}
     for round_ in range(args.repeat):
-        for suffix, driver, procs, ranks, threads in runs:
-            per_step, count = time_run(os.path.abspath(driver), script, args.mpirun, args.fluid_steps,
-                                       procs, ranks, threads)
-            times[suffix].append(per_step)
-            particles[suffix] = count
-            print(f"bench_paper_run: round {round_ + 1}, {driver}, {ranks} rank(s) x {threads} "
-                  f"thread(s), processors {procs}: {per_step:.4g} s per fluid step, {count} particles",
-                  flush=True)
-    for suffix, *_ in runs:
-        t = sorted(times[suffix])
-        median = statistics.median(t)
-        print(f"BENCH paper_run_fluid_step_s{suffix} {median:.4g} s")
-        print(f"BENCH paper_run_particles{suffix} {particles[suffix]} count")
-        for name, value in (("", median), ("_min", t[0]), ("_max", t[-1])):
-            print(f"BENCH paper_run_projected_hours{suffix}{name} {value * PAPER_STEPS / 3600:.3f} hours")
+        for state in states:
+            if args.baseline_driver:
+                # Right before the run it is paired with: a load swing falls on both.
+                base = time_state(args, state, folders[state], args.baseline_driver)
+                if base is None:
+                    sys.exit(f"bench_paper_run: the baseline's timed run of state '{state}' failed")
+            result = time_state(args, state, folders[state])
+            if result is None:  # unreadable by this driver (a format change): made again once
+                make_state(args, state, folders[state])
+                result = time_state(args, state, folders[state])
+            if result is None:
+                sys.exit(f"bench_paper_run: the timed run of state '{state}' failed")
+            results[state].append(result)
+            if args.baseline_driver:
+                pair_ratios[state].append(result["fluid_step_ms"] / base["fluid_step_ms"])
+                print(f"bench_paper_run: round {round_ + 1}, state {state}, baseline: "
+                      f"{base['fluid_step_ms']:.3f} ms per fluid step", flush=True)
+            print(f"bench_paper_run: round {round_ + 1}, state {state}: {result['fluid_step_ms']:.3f} ms "
+                  f"per fluid step, {result['links']:.0f} links, {result['particles']} particles, "
+                  f"{result['deposited']:g} deposited", flush=True)
+    for state in states:
+        runs = results[state]
+        median = lambda key: statistics.median(r[key] for r in runs)
+        step_ms = sorted(r["fluid_step_ms"] for r in runs)
+        particles, deposited = runs[-1]["particles"], runs[-1]["deposited"]
+        name = f"paper_run_{state}"
+        print(f"BENCH {name}_particles {particles} count")
+        print(f"BENCH {name}_deposited {deposited:g} count")
+        print(f"BENCH {name}_fluid_step_ms {statistics.median(step_ms):.3f} ms")
+        print(f"BENCH {name}_fluid_step_ms_min {step_ms[0]:.3f} ms")
+        print(f"BENCH {name}_fluid_step_ms_max {step_ms[-1]:.3f} ms")
+        parts = {key: median(key) for key in STAGES + ["lubrication", "diagnostics", "dem_and_rest"]}
+        for key, value in parts.items():
+            print(f"BENCH {name}_{key.replace(' ', '_').replace('-', '_')}_ms {1e3 * value:.3f} ms")
+        print(f"BENCH {name}_links_per_step {median('links'):.0f} count")
+        print(f"BENCH {name}_ns_per_link {median('ns_per_link'):.1f} ns")
+        fcu = median("fcu_per_link")
+        print(f"BENCH {name}_coupling_fluid_cell_updates_per_link {fcu:.2f} ratio")
+        # The parts are medians of their own; the projections scale the median step by them.
+        step_s = statistics.median(step_ms) / 1e3
+        for suffix, hours in projections(parts, step_s).items():
+            print(f"BENCH {name}_projected_hours{suffix} {hours:.3f} hours")
+        print(f"BENCH {name}_projected_hours_min {step_ms[0] / 1e3 * PAPER_STEPS / 3600:.3f} hours")
+        print(f"BENCH {name}_projected_hours_max {step_ms[-1] / 1e3 * PAPER_STEPS / 3600:.3f} hours")
+        if pair_ratios[state]:
+            ratios = sorted(pair_ratios[state])
+            print(f"BENCH {name}_vs_baseline {statistics.median(ratios):.3f} ratio")
+            print(f"BENCH {name}_vs_baseline_min {ratios[0]:.3f} ratio")
+            print(f"BENCH {name}_vs_baseline_max {ratios[-1]:.3f} ratio")
+        if state == "steady":
+            print(f"BENCH paper_run_projected_hours {step_s * PAPER_STEPS / 3600:.3f} hours")
+            print(f"BENCH coupling_fluid_cell_updates_per_link {fcu:.2f} ratio")
 
 
 if __name__ == "__main__":

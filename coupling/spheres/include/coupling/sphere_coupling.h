@@ -33,6 +33,12 @@ struct StageTimes {
          force = 0.0, open_boundaries = 0.0, collide_stream = 0.0;
 };
 
+// The links of the moving surfaces summed over `steps` calls of apply_moving_walls_and_force
+// on this rank: the work of the coupling stages, which cost per link.
+struct LinkCounts {
+  long long steps = 0, links = 0;
+};
+
 // How often the step's halo exchange sent, on each axis, the moments of the ghost nodes
 // besides the five populations crossing each face (Mei-Luo-Shyy reads the moments of a
 // ghost node, whole_ghost_axes), over `steps` calls of map_and_refill.
@@ -94,8 +100,10 @@ class SphereCoupling {
   // map_and_refill decided (all ranks alike).
   const std::array<bool, 3>& ghost_moment_axes() const { return ghost_moment_axes_; }
   const HaloCounts& halo_counts() const { return halo_counts_; }
+  const LinkCounts& link_counts() const { return link_counts_; }
   const SphereCouplingOptions& options() const { return options_; }
   lbm::FluidSolver& solver() { return solver_; }
+  const lbm::FluidSolver& solver() const { return solver_; }
 
  private:
   lbm::FluidSolver& solver_;
@@ -124,6 +132,7 @@ class SphereCoupling {
   GhostMomentCells ghost_moment_cells_;      // this step's, where near spheres; reused
   StageTimes times_;
   HaloCounts halo_counts_;
+  LinkCounts link_counts_;
 };
 
 }  // namespace coupling

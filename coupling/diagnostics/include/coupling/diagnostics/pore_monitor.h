@@ -150,7 +150,6 @@ class PoreMonitor {
   double fluid_mass_unit() const;
   void add_plane_masses(const lbm::FluidSolver& solver);
   double coupling_mass_[2] = {0.0, 0.0};  // this rank's, since the last fluid step recorded
-  static long long owned_moving_nodes(const lbm::FluidSolver& solver);
   long long last_burst_sample_ = -1;  // the fluid step last fed to the detector
   std::unique_ptr<BurstFileWriter> burst_file_;
 };

@@ -42,7 +42,9 @@ class RunTimer {
   // Two lines ending in newlines, or "" when no fluid step was run: the run's parts with
   // the seconds per fluid step, and the coupling's stage times since the lattice was built;
   // a third line says how often the coupled steps' halo exchange sent the ghost nodes'
-  // moments per axis, once a step was counted there.
+  // moments per axis, once a step was counted there; a fourth, once links were applied,
+  // gives the links per step and the coupling stages' cost per link, in ns and in
+  // fluid-cell updates of the same run's collide-stream (this rank's figures).
   std::string report(const SphereCoupling& coupling) const;
 
  private:
