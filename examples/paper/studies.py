@@ -209,7 +209,9 @@ def calibration(size):
     the hold at each pressure peak. quick: 2 x 10^5 fluid steps per run; paper: 10^6.
     Beside them (quick and paper), the runs at u_lattice 0.005 again with N_DEM = 20 DEM
     substeps per fluid step instead of 100 (names ending in _n_dem_20): whether the
-    statistics depend on N_DEM, which the paper sets for stability and cost only."""
+    statistics depend on N_DEM, which the paper sets for stability and cost only; and at 5
+    cells per d instead of 7.1 (_5_cells_per_d): whether the quick studies' resolution keeps
+    them."""
     velocities = _counts(size, [0.02, 0.005], [0.02, 0.01, 0.005, 0.0025], [0.02, 0.01, 0.005, 0.0025])
     seeds = _seeds(_counts(size, 1, 2, 2))
     lengths = {"tiny": {}, "quick": dict(cells_per_d=7.1, steps=20000000, warmup=200000),
@@ -226,6 +228,11 @@ def calibration(size):
         for u in _counts(size, [], [0.005], [0.005]):
             knobs = dict(next(k for name, k in runs if name == f"u_{u:g}_seed_{seed}"))
             runs.append((f"u_{u:g}_seed_{seed}_n_dem_20", with_n_dem(knobs, 20)))
+            # The same physical run at 5 cells per d (in.pore's acoustic scaling keeps the DEM
+            # step counts): the quick studies' resolution.
+            coarse = dict(knobs, cells_per_d=5)
+            coarse.update(scene(5))
+            runs.append((f"u_{u:g}_seed_{seed}_5_cells_per_d", coarse))
     return runs
 
 

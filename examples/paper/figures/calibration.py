@@ -49,7 +49,8 @@ def inlet_rate_ratio(run, columns):
 def run_row(run):
     columns = thermo(run["folder"])
     row = dict(name=run["name"], u=float(run["knobs"]["u_lattice"]), seed=run["knobs"]["seed"],
-               n_dem=int(run["knobs"].get("n_dem", 100)), state=run["state"], reason=run.get("reason", ""))
+               n_dem=int(run["knobs"].get("n_dem", 100)), cells_per_d=float(run["knobs"]["cells_per_d"]),
+               state=run["state"], reason=run.get("reason", ""))
     if "pore[16]" not in columns:
         return row, columns
     steps = np.asarray(columns["Step"], float)
@@ -79,20 +80,96 @@ def stop_reason(error):
 
 
 def table(rows):
-    lines = ["| run | u_lattice | N_DEM | ended | fluid steps | largest deposit (count, V_dep [d^3]) | P_0 | P_max "
+    lines = ["| run | u_lattice | N_DEM | cells per d | ended | fluid steps | largest deposit (count, V_dep [d^3]) | P_0 | P_max "
              "| bursts (P_peak: deposited) | wall hold / (P pi D^2/4) at peaks, median | max Mach "
              "| inlet rate / c_in u_in W^2 / V_p |",
-             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         if "fluid_steps" not in r:
-            lines.append(f"| {r['name']} | {r['u']:g} | {r['n_dem']} | {r['state']} | - | - | - | - | - | - | - | - |")
+            lines.append(f"| {r['name']} | {r['u']:g} | {r['n_dem']} | {r['cells_per_d']:g} | {r['state']} "
+                         "| - | - | - | - | - | - | - | - |")
             continue
         ended = r["state"] if r["state"] != "failed" else "stopped: " + stop_reason(r["reason"])
         peaks = ", ".join(f"{p:.2f}: {c}" for p, c in r["peaks"][:8]) + (" ..." if len(r["peaks"]) > 8 else "")
-        lines.append(f"| {r['name']} | {r['u']:g} | {r['n_dem']} | {ended} | {r['fluid_steps']} | {r['count']}, {r['V_dep']:.2f} "
+        lines.append(f"| {r['name']} | {r['u']:g} | {r['n_dem']} | {r['cells_per_d']:g} | {ended} | {r['fluid_steps']} | {r['count']}, {r['V_dep']:.2f} "
                      f"| {r['P0']:.3f} | {r['P_max']:.3f} | {r['bursts']} ({peaks or 'none'}) "
                      f"| {r['hold']:.2f} | {r['mach']:.3f} | {r['inlet']:.2f} |")
     return "\n".join(lines)
+
+
+VARIANTS = (("", "N_DEM 100, 7.1 cells/d"), ("_n_dem_20", "N_DEM 20"), ("_5_cells_per_d", "5 cells/d"))
+BLOCK = 2000.0  # the paper's fluid steps per block of the block bootstrap (burst cycles are shorter)
+
+
+def block_mean(t, y, rng, draws=2000):
+    """Mean of a time series and its 95 % interval from a block bootstrap (blocks of BLOCK
+    time units, so that the correlation within a burst cycle stays in a block)."""
+    t, y = np.asarray(t, float), np.asarray(y, float)
+    if len(y) < 2:
+        return (np.nan, np.nan, np.nan)
+    labels = ((t - t[0]) // BLOCK).astype(int)
+    blocks = [y[labels == b] for b in np.unique(labels)]
+    means = [np.mean(np.concatenate([blocks[i] for i in rng.integers(0, len(blocks), len(blocks))]))
+             for _ in range(draws)]
+    return (float(np.mean(y)), float(np.percentile(means, 2.5)), float(np.percentile(means, 97.5)))
+
+
+def run_times(run):
+    """(times of the thermo rows, time the warm-up ends) in the paper's fluid steps, or None."""
+    columns = thermo(run["folder"])
+    if "pore[16]" not in columns:
+        return None
+    dt = lattice_timing(run["folder"])["dt_dem"]
+    return np.asarray(columns["Step"], float) * dt, float(run["knobs"]["warmup"]) * dt
+
+
+def twin_statistics(run, rng, until):
+    """What the N_DEM and resolution comparisons compare, per run, from the end of its
+    warm-up to `until` time units after it (the span all twins reached): the mean deposited
+    count and the mean P / P_out over time (block-bootstrap intervals), the bursts per 10^4
+    time units (the paper's fluid steps) and the mean deposited count and P at the peaks."""
+    columns = thermo(run["folder"])
+    t, warmup = run_times(run)
+    warm = (t > warmup) & (t <= warmup + until)
+    if warm.sum() < 2:
+        return None
+    dt = lattice_timing(run["folder"])["dt_dem"]
+    rows = [b for b in bursts(run["folder"]) if warmup < b["step"] * dt <= warmup + until]
+    span = t[warm][-1] - t[warm][0]
+    return dict(time=span, count=block_mean(t[warm], np.asarray(columns["pore[7]"], float)[warm], rng),
+                P=block_mean(t[warm], np.asarray(columns["pore[16]"], float)[warm], rng),
+                burst_rate=1e4 * len(rows) / span if span > 0 else np.nan,
+                peak_count=float(np.mean([b["count_before"] for b in rows])) if rows else np.nan,
+                peak_P=float(np.mean([b["P_peak"] for b in rows])) if rows else np.nan)
+
+
+def twins_table(runs):
+    """Per base run (N_DEM 100 at 7.1 cells per d) that has twins (_n_dem_20,
+    _5_cells_per_d): the twin statistics side by side. Intervals that overlap read as
+    agreement within one run's noise; across seeds the table holds one row per seed."""
+    rng = np.random.default_rng(1)
+    by_name = {run["name"]: run for run in runs}
+    fmt = lambda v: f"{v[0]:.2f} [{v[1]:.2f}, {v[2]:.2f}]"
+    lines = ["| run | variant | time after warm-up | mean deposited | mean P [P_out] | bursts per 10^4 "
+             "| deposited at peaks, mean | P_peak, mean |", "|---|---|---|---|---|---|---|---|"]
+    for name, base in by_name.items():
+        if any(name.endswith(suffix) for suffix, _ in VARIANTS[1:]):
+            continue
+        if not any(name + suffix in by_name for suffix, _ in VARIANTS[1:]):
+            continue
+        spans = [times[0][-1] - times[1] for times in
+                 (run_times(by_name[name + suffix]) for suffix, _ in VARIANTS if name + suffix in by_name)
+                 if times is not None and len(times[0])]
+        until = min(spans) if spans else 0.0
+        for suffix, label in VARIANTS:
+            run = by_name.get(name + suffix)
+            stats = twin_statistics(run, rng, until) if run and run_times(run) is not None else None
+            if stats is None:
+                lines.append(f"| {name} | {label} | - | - | - | - | - | - |")
+                continue
+            lines.append(f"| {name} | {label} | {stats['time']:.0f} | {fmt(stats['count'])} | {fmt(stats['P'])} "
+                         f"| {stats['burst_rate']:.2f} | {stats['peak_count']:.1f} | {stats['peak_P']:.3f} |")
+    return "\n".join(lines) if len(lines) > 2 else ""
 
 
 def analyze(summary, out_dir):
@@ -109,7 +186,8 @@ def analyze(summary, out_dir):
         n_dem = lattice_timing(runs[k]["folder"])["n_dem"]
         t = np.asarray(columns["Step"], float) / n_dem
         axes[0].plot(t, columns["pore[16]"], lw=0.7, label=f"u {row['u']:g}, seed {row['seed']}"
-                     + (f", N_DEM {row['n_dem']}" if row["n_dem"] != 100 else ""))
+                     + (f", N_DEM {row['n_dem']}" if row["n_dem"] != 100 else "")
+                     + (f", {row['cells_per_d']:g} cells/d" if row["cells_per_d"] != 7.1 else ""))
         axes[1].plot(t, columns["pore[7]"], lw=0.7)
     axes[0].axhspan(*CRITERION_P, color="0.9", zorder=0)
     axes[0].set_ylabel("P [P_out]")
@@ -119,11 +197,17 @@ def analyze(summary, out_dir):
     axes[0].legend(fontsize=7, ncol=2)
     plot = save(fig, out_dir, "calibration")
     text = table(rows)
+    twins = twins_table(runs)
     with open(os.path.join(out_dir, "calibration.md"), "w") as f:
         f.write(text + "\n")
-    # The default velocity is chosen at the paper's N_DEM; the N_DEM = 20 runs only compare.
+        if twins:
+            f.write("\nThe same runs at N_DEM 20 and at 5 cells per d, each over the time after the warm-up "
+                    "that all of its twins have reached (in the paper's fluid steps; 95 % block-bootstrap "
+                    "intervals):\n\n" + twins + "\n")
+    # The default velocity is chosen at the paper's N_DEM and resolution; the other runs
+    # only compare.
     qualifying = sorted({r["u"] for r in rows if r.get("qualifying") and r["state"] == "done"
-                         and r["n_dem"] == 100})
+                         and r["n_dem"] == 100 and r["cells_per_d"] == 7.1})
     choice = f"u_lattice {max(qualifying):g}" if qualifying else "none of the runs qualifies yet"
     return result(summary, "calibration", "the largest u_lattice whose bursts carry >= 15 deposited "
                   "particles at 0.3-0.6 P_out and whose runs reach their end",
