@@ -28,7 +28,7 @@ namespace {
 void print_project_version(LAMMPS_NS::LAMMPS* lammps) {
   const char* line = "liggghts-lbm " LBM_PORE_VERSION
                      " (lbm-pore: fix lbm/pore, fix wall/voxel, pair_style lbm/dashdot, "
-                     "compute lbm/bonds)\n";
+                     "compute lbm/bonds, fix insert/pack/gap)\n";
   LAMMPS_NS::Universe* universe = lammps->universe;
   if (universe->me == 0 && universe->nworlds > 1)
     lbm_pore::print_to_screen_and_log(universe->uscreen, universe->ulogfile, line);

@@ -13,6 +13,7 @@
 // Our styles.
 #include "dashdot/compute_lbm_bonds.h"
 #include "dashdot/pair_lbm_dashdot.h"
+#include "insert_gap/fix_insert_pack_gap.h"
 #include "lbm_pore/fix_lbm_pore.h"
 #include "plugin_common/restart_version.h"
 #include "wall_voxel/fix_wall_voxel.h"
@@ -46,6 +47,7 @@ const PairStyle kPairStyles[] = {
 const FixStyle kFixStyles[] = {
     {"wall/voxel", &create_fix<LAMMPS_NS::FixWallVoxel>},
     {"lbm/pore", &create_fix<LAMMPS_NS::FixLbmPore>},
+    {"insert/pack/gap", &create_fix<LAMMPS_NS::FixInsertPackGap>},
     // Not for input scripts: liggghts-lbm adds it to every run (plugin_common/restart_version.h).
     {lbm_pore::kRestartVersionFixStyle, &lbm_pore::create_restart_version_fix},
 };

@@ -5,7 +5,8 @@ output with the paper's analytic values. Prints each measured figure and its bou
 
 usage: dem_check.py --driver PATH --scripts DIR [--mpirun mpirun] [--liggghts PATH] CASE
 cases: bond_hold, bond_break, restitution, adhesion_hold, adhesion_break, tilt_stick,
-       tilt_slide, parallel_equal, restart_version (needs --liggghts, Debian's liggghts)
+       tilt_slide, parallel_equal, insert_gap, restart_version (needs --liggghts, Debian's
+       liggghts)
 """
 import math
 import os
@@ -182,6 +183,52 @@ def restart_version(h):
                       f"no '{VERSION_WARNING}', the run continues")
 
 
+def dumped_particles(path):
+    """(positions, radii, masses) of the last snapshot of a LIGGGHTS custom dump."""
+    with open(path) as f:
+        lines = f.read().splitlines()
+    start = max(i for i, line in enumerate(lines) if line.startswith("ITEM: ATOMS"))
+    cols = lines[start].split()[2:]
+    rows = [[float(v) for v in line.split()] for line in lines[start + 1:] if line.strip()]
+    pick = lambda name: [row[cols.index(name)] for row in rows]
+    return list(zip(pick("x"), pick("y"), pick("z"))), pick("radius"), pick("mass")
+
+
+def smallest_gap(positions, radii, box=8.0):
+    """The smallest surface gap over all pairs, with the periodic images of in.insert_gap's box."""
+    smallest = math.inf
+    for i in range(len(positions)):
+        for j in range(i):
+            d = [a - b for a, b in zip(positions[i], positions[j])]
+            d = [c - box * round(c / box) for c in d]
+            smallest = min(smallest, math.sqrt(sum(c * c for c in d)) - radii[i] - radii[j])
+    return smallest
+
+
+def insert_gap(h):
+    """fix insert/pack/gap keeps every pair of inserted particles at least min_gap apart, across
+    the periodic boundaries and the ranks' borders, and between two insertion steps; the
+    particles keep their template's radius and mass. LIGGGHTS's insert/pack at the same
+    density places pairs closer than that (so that the check can fail)."""
+    gap = 0.25
+    mass = 4.0 / 3.0 * math.pi * 0.5 ** 3 * 2.3
+    for ranks in (1, 2):
+        run = h.run("in.insert_gap", {"gap": gap}, ranks=ranks)
+        positions, radii, masses = dumped_particles(os.path.join(run.work, "insert_gap.dump"))
+        smallest = smallest_gap(positions, radii)
+        check(f"insert_gap_smallest_gap_{ranks}_ranks", len(positions) > 50 and smallest >= gap - 1e-9,
+              f"{smallest:.4g} over {len(positions)} particles", f">= min_gap {gap}, more than 50 inserted")
+        check(f"insert_gap_template_radius_and_mass_{ranks}_ranks",
+              all(r == 0.5 for r in radii) and all(abs(m - mass) <= 1e-5 * mass for m in masses),
+              f"radii {min(radii)}-{max(radii)}, masses {min(masses):.6g}-{max(masses):.6g}",
+              f"0.5 and {mass:.6g} (the template's, to the dump's 6 digits)")
+    run = h.run("in.insert_gap", {"gap": 0})
+    positions, radii, _ = dumped_particles(os.path.join(run.work, "insert_gap.dump"))
+    smallest = smallest_gap(positions, radii)
+    check("insert_pack_places_closer", 0.0 <= smallest < gap, f"{smallest:.4g}",
+          f"in [0, {gap}): insert/pack checks overlap only")
+
+
 if __name__ == "__main__":
     main({"bond_hold": lambda h: hold_or_break(h, BOND, 0.95),
           "bond_break": lambda h: hold_or_break(h, BOND, 1.2),
@@ -191,4 +238,5 @@ if __name__ == "__main__":
           "tilt_stick": lambda h: tilt(h, False),
           "tilt_slide": lambda h: tilt(h, True),
           "parallel_equal": parallel_equal,
-          "restart_version": restart_version}, __doc__)
+          "restart_version": restart_version,
+          "insert_gap": insert_gap}, __doc__)
