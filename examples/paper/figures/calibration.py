@@ -185,8 +185,8 @@ def analyze(summary, out_dir):
     for k, (row, columns) in enumerate(series):
         if "pore[16]" not in columns:
             continue
-        n_dem = lattice_timing(runs[k]["folder"])["n_dem"]
-        t = np.asarray(columns["Step"], float) / n_dem
+        # The paper's fluid steps (time units): runs at another N_DEM or resolution line up.
+        t = np.asarray(columns["Step"], float) * lattice_timing(runs[k]["folder"])["dt_dem"]
         axes[0].plot(t, columns["pore[16]"], lw=0.7, label=f"u {row['u']:g}, seed {row['seed']}"
                      + (f", N_DEM {row['n_dem']}" if row["n_dem"] != 100 else "")
                      + (f", {row['cells_per_d']:g} cells/d" if row["cells_per_d"] != 7.1 else ""))
@@ -195,7 +195,7 @@ def analyze(summary, out_dir):
     axes[0].set_ylabel("P [P_out]")
     axes[1].set_ylabel("deposited particles")
     axes[1].axhline(CRITERION_COUNT, color="0.5", ls=":")
-    axes[1].set_xlabel("fluid steps")
+    axes[1].set_xlabel("time [the paper's fluid steps]")
     axes[0].legend(fontsize=7, ncol=2)
     plot = save(fig, out_dir, "calibration")
     text = table(rows)
