@@ -103,18 +103,10 @@ def _seeds(n, first=100003):
     return seeds
 
 
-# DEM substeps per fluid step of the studies (quick and paper): the calibration's runs at
-# N_DEM 20 and 100 agree within their intervals (doc/calibration.md), and 20 costs the DEM a
-# fifth. The calibration itself keeps the paper's 100 (its twins compare the two).
-STUDY_N_DEM = 20
-
-
-def _base(size, paper_n_dem=False, **extra):
+def _base(size, **extra):
     knobs = dict(SIZES[size])
     knobs.update(scene(knobs["cells_per_d"]))
     knobs.update(extra)
-    if size != "tiny" and not paper_n_dem and "n_dem" not in extra:
-        knobs = with_n_dem(knobs, STUDY_N_DEM)
     return knobs
 
 
@@ -227,8 +219,7 @@ def calibration(size):
     runs = []
     for seed in seeds:
         for u in velocities:
-            knobs = _base(size, paper_n_dem=True, seed=seed, u_lattice=u, thermo_extra="f_walls[2] f_pore[14]",
-                          **lengths)
+            knobs = _base(size, seed=seed, u_lattice=u, thermo_extra="f_walls[2] f_pore[14]", **lengths)
             knobs.update(scene(knobs["cells_per_d"]))
             if size != "tiny":
                 knobs["thermo_every"] = 1000
