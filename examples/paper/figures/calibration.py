@@ -123,13 +123,13 @@ def run_times(run):
     return np.asarray(columns["Step"], float) * dt, float(run["knobs"]["warmup"]) * dt
 
 
-def twin_statistics(run, rng, until):
-    """What the N_DEM and resolution comparisons compare, per run, from the end of its
-    warm-up to `until` time units after it (the span all twins reached): the mean deposited
-    count and the mean P / P_out over time (block-bootstrap intervals), the bursts per 10^4
-    time units (the paper's fluid steps) and the mean deposited count and P at the peaks."""
+def twin_statistics(run, times, rng, until):
+    """What the N_DEM and resolution comparisons compare, per run (its run_times `times`),
+    from the end of its warm-up to `until` time units after it: the mean deposited count and
+    the mean P / P_out over time (block-bootstrap intervals), the bursts per 10^4 time units
+    (the paper's fluid steps) and the mean deposited count and P at the peaks."""
     columns = thermo(run["folder"])
-    t, warmup = run_times(run)
+    t, warmup = times
     warm = (t > warmup) & (t <= warmup + until)
     if warm.sum() < 2:
         return None
@@ -150,21 +150,20 @@ def twins_table(runs):
     one run's noise; across seeds the table holds one pair of rows per seed."""
     rng = np.random.default_rng(1)
     by_name = {run["name"]: run for run in runs}
+    times = {name: run_times(run) for name, run in by_name.items()}
+    times = {name: t for name, t in times.items() if t is not None and len(t[0])}
     fmt = lambda v: f"{v[0]:.2f} [{v[1]:.2f}, {v[2]:.2f}]"
     lines = ["| run | variant | time after warm-up | mean deposited | mean P [P_out] | bursts per 10^4 "
              "| deposited at peaks, mean | P_peak, mean |", "|---|---|---|---|---|---|---|---|"]
-    span = lambda run: (lambda times: times[0][-1] - times[1] if times is not None and len(times[0]) else 0.0)(
-        run_times(run))
-    for name, base in by_name.items():
-        if any(name.endswith(suffix) for suffix, _ in VARIANTS[1:]) or run_times(base) is None:
+    for name in times:
+        if any(name.endswith(suffix) for suffix, _ in VARIANTS[1:]):
             continue
         for suffix, label in VARIANTS[1:]:
-            twin = by_name.get(name + suffix)
-            if twin is None or run_times(twin) is None:
+            if name + suffix not in times:
                 continue
-            until = min(span(base), span(twin))
-            for run, variant in ((base, VARIANTS[0][1]), (twin, label)):
-                stats = twin_statistics(run, rng, until)
+            until = min(times[n][0][-1] - times[n][1] for n in (name, name + suffix))
+            for run_name, variant in ((name, VARIANTS[0][1]), (name + suffix, label)):
+                stats = twin_statistics(by_name[run_name], times[run_name], rng, until)
                 if stats is None:
                     lines.append(f"| {name} | {variant} | - | - | - | - | - | - |")
                     continue
