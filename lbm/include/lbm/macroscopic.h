@@ -37,8 +37,9 @@ double plane_mean_pressure(const FluidSolver& solver, int axis, int index);
 double total_mass(const FluidSolver& solver);
 // total_mass, max_speed (lbm/stability.h) and the count of owned particle (kMoving) nodes, as
 // those give them, bit for bit, from one pass over the lattice that reads each population
-// array along its rows (the diagnostics of every thermo row: two whole-lattice passes that
-// gathered 19 arrays per node cost a fifth of a pure fluid step at a row every 10 steps).
+// array front to back, plane by plane (the diagnostics of every thermo row: the two
+// whole-lattice passes it replaces, which gathered 19 arrays per node, cost a fifth of a pure
+// fluid step at a row every 10 steps).
 struct LatticeTotals {
   double mass = 0.0;
   double max_speed = 0.0;
