@@ -7,6 +7,7 @@
 
 #include "lbm/d3q19.h"
 #include "lbm/node_type.h"
+#include "plane_moments.h"
 #include "plane_nodes.h"
 
 namespace lbm {
@@ -139,66 +140,96 @@ double total_mass(const FluidSolver& solver) {
   return solver.decomposition().comm.sum(mass);
 }
 
+namespace detail {
 namespace {
-// rho and |u|^2 of the slots [0, length) from 19 arrays, one slot at a time across the SIMD
-// lanes (each array read once, front to back): per slot the same additions, in the same
-// order, as FluidSolver::density() and velocity() make (j += c v with c = +-1 is j +- v
-// exactly; c = 0 adds a zero there, which changes at most the sign of a zero sum, and so
-// neither u - F/2 nor |u|^2), and |u|^2 as max_speed() computes it.
+// Array p's populations added into the sums of the slots [0, length): rho += v, and j_a += v
+// or -= v where c_pa is +1 or -1. Called for p = 0 ... 18 in turn, each slot gets the same
+// additions in the same order as FluidSolver::density() and velocity() make (j += c v with
+// c = +-1 is j +- v exactly; c = 0 adds a zero there, which changes at most the sign of a
+// zero sum, and so neither u - F/2 nor |u|^2). One array at a time, front to back, so the
+// loop vectorises: the sums of a plane stay in L1/L2 while the 19 stretches stream past.
+template <int p>
+void add_array(const Real* __restrict v, std::size_t length, double* __restrict rho,
+               double* __restrict jx, double* __restrict jy, double* __restrict jz) {
+  using L = D3Q19;
+  double* const j[3] = {jx, jy, jz};
+  for (std::size_t i = 0; i < length; ++i) {
+    const double x = v[i];
+    rho[i] += x;
+    if constexpr (L::c[p][0] > 0) j[0][i] += x;
+    if constexpr (L::c[p][0] < 0) j[0][i] -= x;
+    if constexpr (L::c[p][1] > 0) j[1][i] += x;
+    if constexpr (L::c[p][1] < 0) j[1][i] -= x;
+    if constexpr (L::c[p][2] > 0) j[2][i] += x;
+    if constexpr (L::c[p][2] < 0) j[2][i] -= x;
+  }
+}
+
+// rho and |u|^2 of the slots [0, length) from the 19 arrays f[q] + [0, length), |u|^2 as
+// max_speed() computes it; `scratch` holds 3 x length doubles.
 template <int... q>
 void row_moments(const Real* const* f, std::size_t length, const std::array<double, 3>& F,
-                 bool incompressible, double rho0, double* __restrict rho_out,
-                 double* __restrict speed2_out, std::integer_sequence<int, q...>) {
-  using L = D3Q19;
+                 bool incompressible, double rho0, double* __restrict rho,
+                 double* __restrict speed2, double* __restrict scratch,
+                 std::integer_sequence<int, q...>) {
+  double* const jx = scratch;
+  double* const jy = scratch + length;
+  double* const jz = scratch + 2 * length;
+  std::fill(rho, rho + length, 0.0);
+  std::fill(scratch, scratch + 3 * length, 0.0);
+  (add_array<q>(f[q], length, rho, jx, jy, jz), ...);
   for (std::size_t i = 0; i < length; ++i) {
-    double rho = 0.0, j[3] = {0.0, 0.0, 0.0};
-    const auto add = [&](int p, double v) {
-      rho += v;
-      for (int a = 0; a < 3; ++a) {
-        if (L::c[p][a] > 0) j[a] += v;
-        if (L::c[p][a] < 0) j[a] -= v;
-      }
-    };
-    (add(q, f[q][i]), ...);
-    const double r = incompressible ? rho0 : rho;
-    const double u[3] = {(j[0] - 0.5 * F[0]) / r, (j[1] - 0.5 * F[1]) / r, (j[2] - 0.5 * F[2]) / r};
-    rho_out[i] = rho;
-    speed2_out[i] = u[0] * u[0] + u[1] * u[1] + u[2] * u[2];
+    const double r = incompressible ? rho0 : rho[i];
+    const double u[3] = {(jx[i] - 0.5 * F[0]) / r, (jy[i] - 0.5 * F[1]) / r, (jz[i] - 0.5 * F[2]) / r};
+    speed2[i] = u[0] * u[0] + u[1] * u[1] + u[2] * u[2];
   }
 }
 }  // namespace
 
-LatticeTotals lattice_totals(const FluidSolver& solver) {
+PlaneMoments plane_moments(const FluidSolver& solver, int k) {
   const BlockLayout& g = solver.layout();
   const PopulationField& f = solver.populations();
+  // A plane's owned rows and the padding between them are one stretch of each array.
+  const std::size_t length = g.cell(g.size(0) - 1, g.size(1) - 1, 0) - g.cell(0, 0, 0) + 1;
+  thread_local std::vector<double> buffer;  // rho, |u|^2 and j of one plane, allocated once
+  buffer.resize(5 * length);
+  const std::size_t plane = g.cell(0, 0, k);
+  const Real* arrays[D3Q19::Q];
+  for (int q = 0; q < D3Q19::Q; ++q) arrays[q] = f.q(q) + plane;
+  const FluidParameters& p = solver.parameters();
+  double* const rho = buffer.data();
+  double* const speed2 = rho + length;
+  row_moments(arrays, length, p.body_force, p.incompressible, p.rho0, rho, speed2, speed2 + length,
+              std::make_integer_sequence<int, D3Q19::Q>{});
+  return {length, rho, speed2};
+}
+}  // namespace detail
+
+LatticeTotals lattice_totals(const FluidSolver& solver) {
+  const BlockLayout& g = solver.layout();
   const std::uint8_t* const type = solver.node_types().data();
   const int nx = g.size(0), ny = g.size(1);
-  // A plane's owned rows and the padding between them are one stretch of each array.
-  const std::size_t length = g.cell(nx - 1, ny - 1, 0) - g.cell(0, 0, 0) + 1;
-  thread_local std::vector<double> sums;  // rho and |u|^2 of one plane, allocated once
-  sums.resize(2 * length);
-  double* const rho = sums.data();
-  double* const speed2 = rho + length;
   LatticeTotals out;
+  double mass = 0.0;      // in a local: a member would be stored and reloaded every node
+  long long moving = 0;
   double largest2 = 0.0;  // the largest |u| is the root of the largest |u|^2 (monotonic)
   for (int k = 0; k < g.size(2); ++k) {
     const std::size_t plane = g.cell(0, 0, k);
-    const Real* arrays[D3Q19::Q];
-    for (int q = 0; q < D3Q19::Q; ++q) arrays[q] = f.q(q) + plane;
-    row_moments(arrays, length, solver.parameters().body_force, solver.parameters().incompressible,
-                solver.parameters().rho0, rho, speed2, std::make_integer_sequence<int, D3Q19::Q>{});
+    const detail::PlaneMoments m = detail::plane_moments(solver, k);
     for (int y = 0; y < ny; ++y) {
       const std::size_t row = g.cell(0, y, k) - plane;
       for (int x = 0; x < nx; ++x) {
         const std::size_t i = row + std::size_t(x);
         const std::uint8_t t = type[plane + i];
-        out.moving_nodes += t == kMoving;
+        moving += t == kMoving;
         if (t != kFluid) continue;
-        out.mass += rho[i];
-        if (rho[i] > 0.0) largest2 = std::max(largest2, speed2[i]);  // velocity() gives 0 else
+        mass += m.rho[i];
+        if (m.rho[i] > 0.0) largest2 = std::max(largest2, m.speed2[i]);  // velocity() gives 0 else
       }
     }
   }
+  out.mass = mass;
+  out.moving_nodes = moving;
   out.max_speed = std::sqrt(largest2);
   double sums_over_ranks[2] = {out.mass, double(out.moving_nodes)};
   solver.decomposition().comm.sum(sums_over_ranks, 2);

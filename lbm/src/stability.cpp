@@ -11,6 +11,7 @@
 
 #include "lbm/node_type.h"
 #include "lbm/thread_team.h"
+#include "plane_moments.h"
 
 namespace lbm {
 
@@ -74,21 +75,44 @@ void for_owned_fluid(const FluidSolver& s, Visit visit) {
   for_owned_fluid(s, 0, s.layout().size(2), visit);
 }
 
-// The first bad node of planes [k_first, k_last) in scan order.
+// Whether the node is fine, and what the guard reports when it is not: the node's own
+// density() and velocity(), as the scan has always read them.
+bool node_is_fine(const FluidSolver& solver, std::size_t cell, double max_speed, double& rho,
+                  double& speed) {
+  rho = solver.density(cell);
+  const auto u = solver.velocity(cell);
+  speed = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+  return std::isfinite(rho) && rho > 0.0 && std::isfinite(speed) && speed <= max_speed;
+}
+
+// The first bad node of planes [k_first, k_last) in scan order. Each plane's moments come
+// from one pass over the 19 arrays (plane_moments, the thermo totals' pass); a node whose
+// |u|^2 there lies clearly below the limit is fine (those moments are density()'s and
+// velocity()'s bit for bit, and the margin would cover any round-off besides); any other
+// node is judged, and reported, from density() and velocity() as before.
 FluidStateProblem first_problem(const FluidSolver& solver, double max_speed, int k_first, int k_last) {
   FluidStateProblem problem;
-  for_owned_fluid(solver, k_first, k_last, [&](std::size_t cell, int i, int j, int k) {
-    const double rho = solver.density(cell);
-    const auto u = solver.velocity(cell);
-    const double speed = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
-    if (std::isfinite(rho) && rho > 0.0 && std::isfinite(speed) && speed <= max_speed)
-      return true;
-    problem.found = true;
-    problem.node = solver.layout().to_global(i, j, k);
-    problem.density = rho;
-    problem.speed = speed;
-    return false;
-  });
+  const BlockLayout& g = solver.layout();
+  const std::uint8_t* const type = solver.node_types().data();
+  const double clearly_fine2 = 0.99 * max_speed * max_speed;
+  for (int k = k_first; k < k_last; ++k) {
+    const std::size_t plane = g.cell(0, 0, k);
+    const detail::PlaneMoments m = detail::plane_moments(solver, k);
+    for (int j = 0; j < g.size(1); ++j)
+      for (int i = 0; i < g.size(0); ++i) {
+        const std::size_t cell = g.cell(i, j, k);
+        if (type[cell] != kFluid) continue;
+        const std::size_t slot = cell - plane;
+        if (std::isfinite(m.rho[slot]) && m.rho[slot] > 0.0 && m.speed2[slot] <= clearly_fine2) continue;
+        double rho, speed;
+        if (node_is_fine(solver, cell, max_speed, rho, speed)) continue;
+        problem.found = true;
+        problem.node = g.to_global(i, j, k);
+        problem.density = rho;
+        problem.speed = speed;
+        return problem;
+      }
+  }
   return problem;
 }
 }  // namespace

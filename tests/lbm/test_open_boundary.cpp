@@ -116,6 +116,28 @@ TEST(Stability, NanAndRunawayNodesAreReportedWithTheirPlace) {
   EXPECT_NEAR(lbm::max_speed(solver), 0.4, 1e-12);
 }
 
+// The scan accepts most nodes from its one pass over the arrays and judges the rest node by
+// node: a speed a hair below the limit passes, a hair above is reported, and so is an
+// infinite density, exactly where the node-by-node scan drew the line.
+TEST(Stability, TheLimitIsDrawnExactlyAtTheGivenSpeed) {
+  lbm::VoxelGeometry g({6, 5, 4});
+  lbm::FluidParameters p;
+  p.periodic = {true, true, true};
+  lbm::FluidSolver solver(g, p, lbm::FlowDrive{}, cases::serial_decomposition(g, p.periodic));
+  solver.initialise_equilibrium(1.0, {0.2, 0.0, 0.0});
+  const double speed = lbm::max_speed(solver);
+  EXPECT_FALSE(lbm::check_fluid_state(solver, speed).found);
+  EXPECT_FALSE(lbm::check_fluid_state(solver, std::nextafter(speed, 1.0)).found);
+  const auto above = lbm::check_fluid_state(solver, std::nextafter(speed, 0.0));
+  ASSERT_TRUE(above.found);
+  EXPECT_EQ(above.node, (std::array<int, 3>{0, 0, 0}));
+  EXPECT_EQ(above.speed, speed);
+  solver.populations().at(0, solver.layout().cell(2, 3, 2)) = HUGE_VAL;
+  const auto infinite = lbm::check_fluid_state(solver, 0.3);
+  ASSERT_TRUE(infinite.found);
+  EXPECT_EQ(infinite.node, (std::array<int, 3>{2, 3, 2}));
+}
+
 // The scan is split over the OpenMP threads by planes: with a bad node in the first and in
 // the last plane, every thread count reports the first in scan order (k, j, i), as one
 // thread does.
