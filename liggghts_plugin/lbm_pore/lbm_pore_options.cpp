@@ -167,6 +167,11 @@ PoreOptions parse_pore_options(const std::vector<std::string>& args) {
       if (v != "remove" && v != "keep")
         fail("keyword 'reference_pressure' = '" + v + "': must be 'remove' or 'keep'");
       o.keep_reference_pressure = v == "keep";
+    } else if (key == "substep_force") {
+      const std::string v = words.text(key);
+      if (v != "held" && v != "fraction")
+        fail("keyword 'substep_force' = '" + v + "': must be 'held' or 'fraction'");
+      o.substep_fraction = v == "fraction";
     } else if (key == "rotation") {
       o.rotation = words.yes_no(key);
     } else if (key == "lubrication") {
@@ -210,7 +215,7 @@ PoreOptions parse_pore_options(const std::vector<std::string>& args) {
 
 const char* pore_options_usage() {
   return "dx, rho, nu, n_dem, magic, scene (pore|voxels), origin, lateral, velocity, "
-         "pressure_loss, boundary, mass_correction, reference_pressure, rotation, lubrication, lubrication_cutoff, deposit_region, deposit_speed, burst_drop, "
+         "pressure_loss, boundary, mass_correction, reference_pressure, substep_force, rotation, lubrication, lubrication_cutoff, deposit_region, deposit_speed, burst_drop, "
          "burst_window, burst_deposits, burst_file, vtk, "
          "checkpoint, checkpoint_keep";
 }

@@ -35,6 +35,9 @@ struct PoreOptions {
   // literally: a particle touching a wall is pressed into it by p0 on its unlinked surface)
   // or removes it (the default; coupling/force/momentum_exchange.h).
   bool keep_reference_pressure = false;
+  // Each DEM substep applies the fluid step's whole load ('held', the default) or 1 / n_dem
+  // of it ('fraction', the paper's wording read literally; coupling/force/substep_load.h).
+  bool substep_fraction = false;
   bool lubrication = true;
   // The paper neglects rotation (translation only): with 'rotation no' the fix adds no
   // torque and the fluid sees the particles without spin (integrate them with fix nve).

@@ -210,6 +210,7 @@ coupling::SubstepLoadParameters substep_load_parameters(const PoreOptions& o, co
                                                         const coupling::Vec3* gravity) {
   coupling::SubstepLoadParameters lp;
   lp.dt_fluid = units.dt_lbm();
+  lp.share = o.substep_fraction ? 1.0 / o.n_dem : 1.0;
   lp.buoyancy = gravity != nullptr;
   lp.fluid_density = o.rho;
   if (gravity) lp.gravity = *gravity;

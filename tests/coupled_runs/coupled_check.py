@@ -4,7 +4,8 @@ compares what it measures with a physical expectation or a reference run. Prints
 with its bound (tests/harness/liggghts_run.py); exits 1 when one fails.
 
 usage: coupled_check.py --driver liggghts-lbm --scripts DIR [--mpirun mpirun] CASE
-CASE: adhesion | clog | clog_pressure | parallel | mpi_splits | outputs | restart | bad_arguments
+CASE: adhesion | clog | clog_pressure | parallel | mpi_splits | outputs | restart | bad_arguments |
+      substep_force
 """
 import math
 import os
@@ -192,6 +193,28 @@ def case_outputs(h):
           "one header line, no burst")
 
 
+def case_substep_force(h):
+    """'substep_force fraction' (the paper's "a fraction of the hydrodynamic force in each
+    time step" read literally): each DEM substep applies 1/n_dem of the fluid step's load.
+    in.outputs' particle, carried by the flow for 3000 DEM steps, then every substep printed:
+    at the first printed substep the force applied (the per-atom f_pore[1] summed, which
+    m dv/dt follows: case outputs) is the fluid step's force (f_pore[14]) with 'held' and a
+    hundredth of it with 'fraction'; and the particle, pushed a hundred times more weakly,
+    has picked up far less of the flow's speed."""
+    steps = 3000
+    held = thermo_rows(h.run("in.outputs", {"steps": steps}).output)
+    part = thermo_rows(h.run("in.outputs", {"steps": steps, "fix_extra": "substep_force fraction"}).output)
+    # The last row of that step: the second run's first (the first run ends on it too).
+    a = [r for r in held if r["Step"] == steps][-1]
+    b = [r for r in part if r["Step"] == steps][-1]
+    check("substep_force_held_applies_the_step_force", abs(a["drag_x"] - a["fx"]) <= 1e-12 * abs(a["fx"]),
+          f"{a['drag_x']:.12g} against {a['fx']:.12g}", "equal to 1e-12")
+    check("substep_force_fraction_applies_one_hundredth", abs(b["drag_x"] - b["fx"] / 100) <= 1e-12 * abs(b["fx"]),
+          f"{b['drag_x']:.12g} against {b['fx'] / 100:.12g}", "f_pore[14] / 100 to 1e-12")
+    check("substep_force_fraction_carries_the_particle_more_slowly", b["vx"] < 0.2 * a["vx"],
+          f"vx {b['vx']:.3g} against {a['vx']:.3g} held", "< 0.2 of the held run's")
+
+
 def case_mpi_splits(h):
     """1 rank against 3 (processors 3 1 1) and 4 (2 2 1, 1 2 2; oversubscribed on 2 cores).
     In in.transit a weak gravity along (0, 1, 1) makes particle 1 sink across y = 10 and
@@ -270,6 +293,8 @@ BAD_CASES = [  # (fix line, second line, boundary "x yz", words the error must c
      ["lateral", "periodic", "boundary"]),
     (f"fix f all lbm/pore dx 1 {BAD} velocity 0.001", "", "p p", ["flow axis x", "periodic"]),
     (f"fix f all lbm/pore dx 1 {BAD} velocity 0.001 boundary fancy", "", "f p", ["'boundary'", "mls"]),
+    (f"fix f all lbm/pore dx 1 {BAD} velocity 0.001 substep_force half", "", "f p",
+     ["'substep_force'", "'held'", "'fraction'"]),
     ("fix f all lbm/pore dx 1 scene voxels /nonexistent.raw velocity 0.001", "", "f p",
      ["/nonexistent.raw", "cannot be opened"]),
     (f"fix f all lbm/pore dx 1 {BAD} velocity 0.001", "fix w all wall/voxel lbm nothere", "f p",
@@ -328,4 +353,4 @@ if __name__ == "__main__":
     main({"adhesion": case_adhesion, "clog": case_clog, "clog_pressure": case_clog_pressure,
           "parallel": case_parallel, "mpi_splits": case_mpi_splits, "outputs": case_outputs,
           "restart": case_restart, "bad_arguments": case_bad_arguments,
-          "threads_on_one_core": case_threads_on_one_core}, __doc__)
+          "threads_on_one_core": case_threads_on_one_core, "substep_force": case_substep_force}, __doc__)

@@ -42,6 +42,32 @@ TEST(SubstepLoad, AVelocityChangeIsResistedWithTheCoefficient) {
   EXPECT_DOUBLE_EQ(load.hydrodynamic[2], 0.0);
 }
 
+// The paper's "a fraction of the hydrodynamic force in each time step" read literally
+// (share 1 / N_DEM): the force, its velocity response and the torque scaled by the share,
+// buoyancy (not the fluid step's) whole.
+TEST(SubstepLoad, AShareOfTheLoadScalesForceResponseAndTorqueButNotBuoyancy) {
+  auto p = parameters();
+  p.share = 1.0 / 100.0;
+  p.buoyancy = true;
+  p.fluid_density = 1.0;
+  p.gravity = {0.0, 0.0, -1.0};
+  SubstepLoadState s;
+  s.force = {2.0, -1.0, 0.5};
+  s.torque = {0.3, 0.0, -0.6};
+  s.coefficient = 4.0;
+  s.step_velocity = {0.1, 0.0, 0.0};
+  const Vec3 v{0.2, 0.05, 0.0};
+  const SubstepLoad held = SubstepLoadModel(parameters()).at_substep(s, v, 0.5);
+  const SubstepLoad part = SubstepLoadModel(p).at_substep(s, v, 0.5);
+  EXPECT_DOUBLE_EQ(part.hydrodynamic[0], (2.0 - 4.0 * 0.1) / 100.0);
+  EXPECT_DOUBLE_EQ(part.hydrodynamic[1], (-1.0 - 4.0 * 0.05) / 100.0);
+  for (int a = 0; a < 3; ++a) {
+    EXPECT_DOUBLE_EQ(part.hydrodynamic[a], held.hydrodynamic[a] / 100.0);
+    EXPECT_DOUBLE_EQ(part.torque[a], s.torque[a] / 100.0);
+  }
+  EXPECT_NEAR(part.buoyancy[2], 4.0 / 3.0 * M_PI * 0.125, 1e-15);
+}
+
 TEST(SubstepLoad, BuoyancyIsMinusFluidDensityTimesVolumeTimesGravity) {
   auto p = parameters();
   p.buoyancy = true;

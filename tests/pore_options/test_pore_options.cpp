@@ -31,6 +31,7 @@ TEST(PoreOptions, PaperSceneWithDefaults) {
   EXPECT_TRUE(o.lubrication);
   EXPECT_TRUE(o.mass_correction);
   EXPECT_FALSE(o.keep_reference_pressure);
+  EXPECT_FALSE(o.substep_fraction);
   EXPECT_EQ(o.checkpoint_keep, 0);
   EXPECT_EQ(o.drive, lbm_pore::PoreOptions::Drive::kVelocity);
 }
@@ -39,7 +40,8 @@ TEST(PoreOptions, AllKeywords) {
   const auto o = lbm_pore::parse_pore_options(
       split("dx 1 rho 2 nu 0.1 n_dem 50 magic 0.25 scene voxels g.raw origin 0 1 2 lateral wall "
             "pressure_loss 0.02 boundary bouzidi mass_correction no lubrication no lubrication_cutoff 0.5 "
-            "deposit_speed 0.001 vtk 10 out checkpoint ck reference_pressure keep checkpoint_keep 2 deposit_region pore"));
+            "deposit_speed 0.001 vtk 10 out checkpoint ck reference_pressure keep checkpoint_keep 2 deposit_region pore "
+            "substep_force fraction"));
   EXPECT_EQ(o.voxel_file, "g.raw");
   EXPECT_FALSE(o.lateral_periodic);
   EXPECT_EQ(o.drive, lbm_pore::PoreOptions::Drive::kPressureLoss);
@@ -52,6 +54,7 @@ TEST(PoreOptions, AllKeywords) {
   EXPECT_TRUE(o.keep_reference_pressure);
   EXPECT_EQ(o.checkpoint_keep, 2);
   EXPECT_TRUE(o.deposits_in_pore_only);
+  EXPECT_TRUE(o.substep_fraction);
 }
 
 TEST(PoreOptions, BadValuesNameTheKeywordAndRange) {
@@ -64,6 +67,8 @@ TEST(PoreOptions, BadValuesNameTheKeywordAndRange) {
             std::string::npos);
   EXPECT_NE(error_of("dx 1 colour red" + kScene).find("unknown keyword 'colour'"), std::string::npos);
   EXPECT_NE(error_of("dx 1 reference_pressure literal" + kScene).find("'reference_pressure' = 'literal': must be 'remove' or 'keep'"),
+            std::string::npos);
+  EXPECT_NE(error_of("dx 1 substep_force half" + kScene).find("'substep_force' = 'half': must be 'held' or 'fraction'"),
             std::string::npos);
   EXPECT_NE(error_of("dx 1 deposit_region inlet" + kScene).find("'deposit_region' = 'inlet': must be 'from_inlet' or 'pore'"),
             std::string::npos);

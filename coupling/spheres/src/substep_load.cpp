@@ -8,9 +8,11 @@ namespace coupling {
 SubstepLoad SubstepLoadModel::at_substep(const SubstepLoadState& state, const Vec3& velocity,
                                          double radius) const {
   SubstepLoad load;
-  const double C = state.coefficient;
-  for (int a = 0; a < 3; ++a) load.hydrodynamic[a] = state.force[a] - C * (velocity[a] - state.step_velocity[a]);
-  load.torque = state.torque;
+  const double C = state.coefficient, share = parameters_.share;
+  for (int a = 0; a < 3; ++a) {
+    load.hydrodynamic[a] = share * (state.force[a] - C * (velocity[a] - state.step_velocity[a]));
+    load.torque[a] = share * state.torque[a];
+  }
   if (parameters_.buoyancy) {
     const double volume = 4.0 / 3.0 * M_PI * radius * radius * radius;
     for (int a = 0; a < 3; ++a) load.buoyancy[a] = -(parameters_.fluid_density * volume * parameters_.gravity[a]);

@@ -33,6 +33,12 @@ struct SubstepLoadParameters {
   // C is kept below this many particle masses per fluid step: enough to stabilise the stiff
   // near-contact mode (C dt / m up to ~4 measured) without freezing a particle's response.
   double max_coefficient_masses = 4.0;
+  // The part of a fluid step's load each substep applies: 1, the load held over the N_DEM
+  // substeps (the default: over a fluid step the particle takes the momentum the fluid gave
+  // it), or 1 / N_DEM, the paper's "the DEM takes into account a fraction of the
+  // hydrodynamic force in each time step" read literally (the fluid's push N_DEM times
+  // weaker). Buoyancy is not the fluid step's and is applied whole either way.
+  double share = 1.0;
   bool buoyancy = false;         // a gravity field is present
   double fluid_density = 1.0;
   Vec3 gravity{0.0, 0.0, 0.0};
@@ -50,7 +56,8 @@ class SubstepLoadModel {
  public:
   explicit SubstepLoadModel(const SubstepLoadParameters& parameters) : parameters_(parameters) {}
 
-  // F_step - C (v - v_step), -rho_f V g, and the step's torque, for a particle of velocity v.
+  // share (F_step - C (v - v_step)), -rho_f V g, and share times the step's torque, for a
+  // particle of velocity v.
   SubstepLoad at_substep(const SubstepLoadState& state, const Vec3& velocity, double radius) const;
 
   // A fluid step in three moves, because the host sums the images of a particle in between:
