@@ -51,6 +51,14 @@ def scene_knobs(scene):
                 if m]
 
 
+def unknown_knobs(scene, knobs):
+    """The knobs the scene script does not define: LIGGGHTS would take them and run without
+    them (a study begun before a knob existed keeps the scene it copied then), so a run would
+    silently repeat another."""
+    defined = set(scene_knobs(scene))
+    return sorted(k for k in knobs if k not in defined)
+
+
 def study_scene(study_dir):
     """The study's own copy of the scene script, <study>/in.pore, made at its first launch:
     LIGGGHTS reads a script line by line while it runs, so a run would read a scene edited

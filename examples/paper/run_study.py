@@ -124,9 +124,15 @@ def main():
     elif not args.summarize:
         shutil.rmtree(os.path.join(out, "launches"), ignore_errors=True)  # partitions' scratch
     os.makedirs(out, exist_ok=True)
+    scene = ensemble.study_scene(out) if not args.summarize else None
     for name, knobs in runs if not args.summarize else []:
         if args.runs and not re.search(args.runs, name):
             continue
+        unknown = ensemble.unknown_knobs(scene, knobs)
+        if unknown:
+            sys.exit(f"run {name}: knob(s) {', '.join(unknown)} not defined by {scene}, the copy of "
+                     "in.pore this study made at its first launch (the scene has changed since): "
+                     "run this study in a new folder (--out), or leave the run out (--runs)")
         action, detail = ensemble.plan_run(os.path.join(out, "runs", name), knobs, args.retry_failed)
         what = {"skip": f"left alone ({detail})", "fresh": f"starts ({detail})",
                 "resume": f"resumes from {os.path.basename(detail[0]) if detail else ''}"}[action]

@@ -97,7 +97,15 @@ def table(rows):
     return "\n".join(lines)
 
 
-VARIANTS = (("", "N_DEM 100, 7.1 cells/d"), ("_n_dem_20", "N_DEM 20"), ("_5_cells_per_d", "5 cells/d"))
+VARIANTS = (("", "N_DEM 100, 7.1 cells/d"), ("_n_dem_20", "N_DEM 20"), ("_5_cells_per_d", "5 cells/d"),
+            ("_min_gap", "min_gap 0.25 d"), ("_keep_pressure", "reference pressure kept"),
+            ("_fraction", "F_h / N_DEM per substep"), ("_pore_deposits", "deposits in the pore only"))
+
+
+def variant_label(name):
+    """The variants a run's name carries (its suffixes, in order), or the base's label."""
+    found = [label for suffix, label in VARIANTS[1:] if suffix in name]
+    return ", ".join(found) if found else VARIANTS[0][1]
 BLOCK = 2000.0  # the paper's fluid steps per block of the block bootstrap (burst cycles are shorter)
 
 
@@ -144,9 +152,10 @@ def twin_statistics(run, times, rng, until):
 
 
 def twins_table(runs):
-    """Per base run (N_DEM 100 at 7.1 cells per d) and each of its twins (_n_dem_20,
-    _5_cells_per_d) that has thermo rows: the twin statistics of both over the time after the
-    warm-up that both reached, one row each. Intervals that overlap read as agreement within
+    """Per run and each of its twins (its name with a VARIANTS suffix: _n_dem_20 and
+    _5_cells_per_d of a 7.1-cells run, the model's twins of a 5-cells run) that has thermo
+    rows: the twin statistics of both over the time after the warm-up that both reached, one
+    row each. Intervals that overlap read as agreement within
     one run's noise; across seeds the table holds one pair of rows per seed."""
     rng = np.random.default_rng(1)
     by_name = {run["name"]: run for run in runs}
@@ -155,14 +164,15 @@ def twins_table(runs):
     fmt = lambda v: f"{v[0]:.2f} [{v[1]:.2f}, {v[2]:.2f}]"
     lines = ["| run | variant | time after warm-up | mean deposited | mean P [P_out] | bursts per 10^4 "
              "| deposited at peaks, mean | P_peak, mean |", "|---|---|---|---|---|---|---|---|"]
+    # Every run with a twin (its name and a variant's suffix): a 5-cells run is the 7.1 run's
+    # twin and the base of the model's twins at 5 cells.
     for name in times:
-        if any(name.endswith(suffix) for suffix, _ in VARIANTS[1:]):
-            continue
-        for suffix, label in VARIANTS[1:]:
+        for suffix, _ in VARIANTS[1:]:
             if name + suffix not in times:
                 continue
             until = min(times[n][0][-1] - times[n][1] for n in (name, name + suffix))
-            for run_name, variant in ((name, VARIANTS[0][1]), (name + suffix, label)):
+            for run_name in (name, name + suffix):
+                variant = variant_label(run_name)
                 stats = twin_statistics(by_name[run_name], times[run_name], rng, until)
                 if stats is None:
                     lines.append(f"| {name} | {variant} | - | - | - | - | - | - |")
@@ -186,9 +196,9 @@ def analyze(summary, out_dir):
             continue
         # The paper's fluid steps (time units): runs at another N_DEM or resolution line up.
         t = np.asarray(columns["Step"], float) * lattice_timing(runs[k]["folder"])["dt_dem"]
+        variant = variant_label(row["name"])
         axes[0].plot(t, columns["pore[16]"], lw=0.7, label=f"u {row['u']:g}, seed {row['seed']}"
-                     + (f", N_DEM {row['n_dem']}" if row["n_dem"] != 100 else "")
-                     + (f", {row['cells_per_d']:g} cells/d" if row["cells_per_d"] != 7.1 else ""))
+                     + ("" if variant == VARIANTS[0][1] else f", {variant}"))
         axes[1].plot(t, columns["pore[7]"], lw=0.7)
     axes[0].axhspan(*CRITERION_P, color="0.9", zorder=0)
     axes[0].set_ylabel("P [P_out]")
