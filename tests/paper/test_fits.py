@@ -5,7 +5,8 @@ must return what it is defined to measure:
   - through the origin on P: c + P_0 / x weighted, not c (what the old fits reported);
   - through the origin on P - P_0 (P_0 read from each run's own warm-up): c;
   - with an intercept: c and P_0.
-Also the V_dep units of dropvol (per D^3 and per pore volume) and the bootstrap's interval.
+Also the V_dep units of dropvol (per D^3 and per pore volume), the bootstrap's interval, and
+the study runner's check of knobs against its study's copy of in.pore.
 
 Usage: test_fits.py <source root>   (or python3 -m unittest with LBM_PORE_REPO set)
 """
@@ -143,6 +144,29 @@ class FiguresCompareLikeWithLike(unittest.TestCase):
         for words in ("through 0", "P - P_0", "intercept"):
             self.assertIn(words, r["ours"])
         self.assertTrue(os.path.getsize(r["plot"]) > 5000)
+
+
+class StudyScene(unittest.TestCase):
+    """A study resumed after in.pore gained a knob keeps its old copy of in.pore, which would
+    take the knob and ignore it: run_study refuses such a run (ensemble.unknown_knobs)."""
+
+    def test_knobs_the_scene_does_not_define_are_named(self):
+        import ensemble
+        with tempfile.TemporaryDirectory() as tmp:
+            scene = os.path.join(tmp, "in.pore")
+            with open(scene, "w") as f:
+                f.write("variable  seed index 1\nvariable  u_lattice index 0.02   # comment\n"
+                        "variable  dx equal 1.0/7.1\n")
+            self.assertEqual(ensemble.unknown_knobs(scene, {"seed": 3, "u_lattice": 0.01}), [])
+            self.assertEqual(ensemble.unknown_knobs(scene, {"seed": 3, "min_gap": 0.25, "dx": 1}),
+                             ["dx", "min_gap"])
+        # The repository's scene defines every knob of every study.
+        import studies
+        scene = os.path.join(REPO, "examples", "pore", "in.pore")
+        for study in studies.STUDIES:
+            for size in ("tiny", "quick", "paper"):
+                for name, knobs in studies.runs_of(study, size):
+                    self.assertEqual(ensemble.unknown_knobs(scene, knobs), [], f"{study} {size} {name}")
 
 
 if __name__ == "__main__":
