@@ -97,11 +97,12 @@ def coupled_figures():
 
 def dem_substep_figures():
     figures = []
-    for case in ("stock", "lbm", "smooth"):
+    for case in ("stock", "stock_touching", "lbm", "smooth"):
         figures.append((f"dem_substep_{case}_us", "us"))
-        parts = ["pair", "neigh", "comm", "output", "modify_other"] + (["lubrication"] if case != "stock" else [])
+        parts = ["pair", "neigh", "comm", "output", "modify_other"] + (["lubrication"] if not case.startswith("stock") else [])
         figures += [(f"dem_substep_{case}_{part}_us", "us") for part in parts]
-    for suffix in ("_smooth", ""):
+        figures.append((f"dem_substep_{case}_pair_contacts", "count"))
+    for suffix in ("_smooth", "_fewer_contacts", ""):
         figures += [(f"dem_substep_ratio{suffix}{m}", "ratio") for m in ("_min", "_max", "")]
     return figures
 
