@@ -41,7 +41,7 @@ rounds, and the median and spread (min, max) of the rounds are printed. Per stat
         142 DEM substeps), each part scaled by what it grows with: collide-stream and
         diagnostics by the cells, (5/7.1)^3; the other coupling stages by the links,
         (5/7.1)^2; the DEM per fluid step by the substeps, 7.1/5.
-and, for the steady state (the main example's load), the headline figures without the
+and, for the steady state (50-80 particles, the load of c_in 0.1), the headline figures without the
 state's name: BENCH paper_run_projected_hours (goal <= 0.5) and
 BENCH coupling_fluid_cell_updates_per_link (goal <= 1).
 With --baseline-driver, each timed run is paired with one of that driver right before it
