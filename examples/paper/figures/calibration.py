@@ -212,8 +212,9 @@ def analyze(summary, out_dir):
     with open(os.path.join(out_dir, "calibration.md"), "w") as f:
         f.write(text + "\n")
         if twins:
-            f.write("\nThe same runs at N_DEM 20 and at 5 cells per d, each pair over the time after the "
-                    "warm-up that both reached (in the paper's fluid steps; 95 % block-bootstrap "
+            f.write("\nEach run beside its twins (the same run at N_DEM 20 or at 5 cells per d; a 5-cells "
+                    "run with one of the model's open points switched), each pair over the time after "
+                    "the warm-up that both reached (in the paper's fluid steps; 95 % block-bootstrap "
                     "intervals):\n\n" + twins + "\n")
     # The default velocity is chosen at the paper's N_DEM and resolution; the other runs
     # only compare.
