@@ -123,12 +123,14 @@ def block_mean(t, y, rng, draws=2000):
 
 
 def run_times(run):
-    """(times of the thermo rows, time the warm-up ends) in the paper's fluid steps, or None."""
+    """(times of the thermo rows, time the warm-up ends, the thermo columns) in the paper's
+    fluid steps, or None. The columns are read once here: a run still under way writes more
+    rows between two reads of its log."""
     columns = thermo(run["folder"])
     if "pore[16]" not in columns:
         return None
     dt = lattice_timing(run["folder"])["dt_dem"]
-    return np.asarray(columns["Step"], float) * dt, float(run["knobs"]["warmup"]) * dt
+    return np.asarray(columns["Step"], float) * dt, float(run["knobs"]["warmup"]) * dt, columns
 
 
 def twin_statistics(run, times, rng, until):
@@ -136,8 +138,7 @@ def twin_statistics(run, times, rng, until):
     from the end of its warm-up to `until` time units after it: the mean deposited count and
     the mean P / P_out over time (block-bootstrap intervals), the bursts per 10^4 time units
     (the paper's fluid steps) and the mean deposited count and P at the peaks."""
-    columns = thermo(run["folder"])
-    t, warmup = times
+    t, warmup, columns = times
     warm = (t > warmup) & (t <= warmup + until)
     if warm.sum() < 2:
         return None
