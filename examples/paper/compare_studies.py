@@ -20,7 +20,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from figures.calibration import run_times, twin_statistics  # noqa: E402
+from figures.calibration import TWIN_HEADER, run_times, twin_row, twin_statistics  # noqa: E402
 
 
 def study_runs(study):
@@ -39,9 +39,7 @@ def study_runs(study):
 def compare(study_a, study_b, pattern=".", labels=("A", "B")):
     rng = np.random.default_rng(1)
     a_runs, b_runs = study_runs(study_a), study_runs(study_b)
-    fmt = lambda v: f"{v[0]:.2f} [{v[1]:.2f}, {v[2]:.2f}]"
-    lines = ["| run | study | time after warm-up | mean deposited | mean P [P_out] | bursts per 10^4 "
-             "| deposited at peaks, mean | P_peak, mean |", "|---|---|---|---|---|---|---|---|"]
+    lines = [TWIN_HEADER[0].replace("| variant |", "| study |"), TWIN_HEADER[1]]
     for name in sorted(set(a_runs) & set(b_runs)):
         if not re.search(pattern, name):
             continue
@@ -50,12 +48,7 @@ def compare(study_a, study_b, pattern=".", labels=("A", "B")):
             continue
         until = min(t[0][-1] - t[1] for t in times)
         for runs, t, label in zip((a_runs, b_runs), times, labels):
-            stats = twin_statistics(runs[name], t, rng, until)
-            if stats is None:
-                lines.append(f"| {name} | {label} | - | - | - | - | - | - |")
-                continue
-            lines.append(f"| {name} | {label} | {stats['time']:.0f} | {fmt(stats['count'])} | {fmt(stats['P'])} "
-                         f"| {stats['burst_rate']:.2f} | {stats['peak_count']:.1f} | {stats['peak_P']:.3f} |")
+            lines.append(twin_row(name, label, twin_statistics(runs[name], t, rng, until)))
     return "\n".join(lines)
 
 

@@ -67,6 +67,20 @@ def concentration_two_ranks(harness):
     measure(harness, 2, "1 * 1")
 
 
+def bad_knobs(harness):
+    """A negative insertion period or minimum gap stops in.pore with an error naming the knob
+    and its range, before any step."""
+    scripts = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "examples", "pore")
+    for knob in ("insert_period", "min_gap"):
+        run = harness.run(os.path.join(scripts, "in.pore"),
+                          {"cells_per_d": 4, "warmup": 100, "steps": 100, "vtk_every": 0, knob: -1},
+                          expect_error=True, timeout=60)
+        error = h.error_line(run.output)
+        said = f"in.pore: {knob} must be >= 0" in run.output and f"{knob}_must_be_at_least_0" in error
+        h.check(f"negative {knob} is refused", run.code != 0 and said, error or "no ERROR line",
+                f"an ERROR naming {knob}, its range printed, exit status not 0")
+
+
 if __name__ == "__main__":
     h.main({"concentration_one_rank": concentration_one_rank,
-            "concentration_two_ranks": concentration_two_ranks}, __doc__)
+            "concentration_two_ranks": concentration_two_ranks, "bad_knobs": bad_knobs}, __doc__)

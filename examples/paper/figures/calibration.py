@@ -153,6 +153,19 @@ def twin_statistics(run, times, rng, until):
                 peak_P=float(np.mean([b["P_peak"] for b in rows])) if rows else np.nan)
 
 
+TWIN_HEADER = ["| run | variant | time after warm-up | mean deposited | mean P [P_out] | bursts per 10^4 "
+               "| deposited at peaks, mean | P_peak, mean |", "|---|---|---|---|---|---|---|---|"]
+
+
+def twin_row(name, label, stats):
+    """One row of a twins table: twin_statistics of run `name` under `label`, or dashes."""
+    if stats is None:
+        return f"| {name} | {label} | - | - | - | - | - | - |"
+    fmt = lambda v: f"{v[0]:.2f} [{v[1]:.2f}, {v[2]:.2f}]"
+    return (f"| {name} | {label} | {stats['time']:.0f} | {fmt(stats['count'])} | {fmt(stats['P'])} "
+            f"| {stats['burst_rate']:.2f} | {stats['peak_count']:.1f} | {stats['peak_P']:.3f} |")
+
+
 def twins_table(runs):
     """Per run and each of its twins (its name with a VARIANTS suffix: _n_dem_20 and
     _5_cells_per_d of a 7.1-cells run, the model's twins of a 5-cells run) that has thermo
@@ -163,9 +176,7 @@ def twins_table(runs):
     by_name = {run["name"]: run for run in runs}
     times = {name: run_times(run) for name, run in by_name.items()}
     times = {name: t for name, t in times.items() if t is not None and len(t[0])}
-    fmt = lambda v: f"{v[0]:.2f} [{v[1]:.2f}, {v[2]:.2f}]"
-    lines = ["| run | variant | time after warm-up | mean deposited | mean P [P_out] | bursts per 10^4 "
-             "| deposited at peaks, mean | P_peak, mean |", "|---|---|---|---|---|---|---|---|"]
+    lines = list(TWIN_HEADER)
     # Every run with a twin (its name and a variant's suffix): a 5-cells run is the 7.1 run's
     # twin and the base of the model's twins at 5 cells.
     for name in times:
@@ -174,14 +185,8 @@ def twins_table(runs):
                 continue
             until = min(times[n][0][-1] - times[n][1] for n in (name, name + suffix))
             for run_name in (name, name + suffix):
-                variant = variant_label(run_name)
                 stats = twin_statistics(by_name[run_name], times[run_name], rng, until)
-                if stats is None:
-                    lines.append(f"| {name} | {variant} | - | - | - | - | - | - |")
-                    continue
-                lines.append(f"| {name} | {variant} | {stats['time']:.0f} | {fmt(stats['count'])} "
-                             f"| {fmt(stats['P'])} | {stats['burst_rate']:.2f} | {stats['peak_count']:.1f} "
-                             f"| {stats['peak_P']:.3f} |")
+                lines.append(twin_row(name, variant_label(run_name), stats))
     return "\n".join(lines) if len(lines) > 2 else ""
 
 
