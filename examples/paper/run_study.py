@@ -105,7 +105,9 @@ def main():
     paper_cost = studies.core_hours(studies.runs_of(args.study, "paper"))
     cost = studies.core_hours(runs)
     cores = args.parallel * args.ranks_per_run
-    print(f"study {args.study}, size {args.size}: {len(runs)} runs into {out}")
+    threads = ensemble.set_threads_per_rank(cores)
+    print(f"study {args.study}, size {args.size}: {len(runs)} runs into {out} "
+          f"({args.parallel} at a time, {args.ranks_per_run} rank(s) each, {threads} OpenMP thread(s) per rank)")
     print(f"estimated cost: {cost:.3g} core-hours ({cost / cores:.3g} h on {cores} cores); "
           f"the paper size: {paper_cost:.3g} core-hours "
           f"({len(studies.runs_of(args.study, 'paper'))} runs of 10^6 fluid steps)", flush=True)

@@ -169,5 +169,31 @@ class StudyScene(unittest.TestCase):
                     self.assertEqual(ensemble.unknown_knobs(scene, knobs), [], f"{study} {size} {name}")
 
 
+class StudyThreads(unittest.TestCase):
+    """Runs side by side share the cores: each rank gets its share as OpenMP threads, unless
+    the user chose (two runs of two threads each on two cores ran ten times slower)."""
+
+    def test_each_rank_gets_its_share_of_the_cores(self):
+        import ensemble
+        self.assertEqual(ensemble.threads_per_rank(2, cores=2), 1)
+        self.assertEqual(ensemble.threads_per_rank(1, cores=2), 2)
+        self.assertEqual(ensemble.threads_per_rank(3, cores=16), 5)
+        self.assertEqual(ensemble.threads_per_rank(8, cores=2), 1)
+
+    def test_the_users_choice_stands(self):
+        import ensemble
+        saved = os.environ.get("OMP_NUM_THREADS")
+        try:
+            os.environ["OMP_NUM_THREADS"] = "3"
+            self.assertEqual(ensemble.set_threads_per_rank(1), 3)
+            del os.environ["OMP_NUM_THREADS"]
+            self.assertEqual(ensemble.set_threads_per_rank(10 ** 6), 1)
+            self.assertEqual(os.environ["OMP_NUM_THREADS"], "1")
+        finally:
+            os.environ.pop("OMP_NUM_THREADS", None)
+            if saved is not None:
+                os.environ["OMP_NUM_THREADS"] = saved
+
+
 if __name__ == "__main__":
     unittest.main()
