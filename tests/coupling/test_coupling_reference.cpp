@@ -5,7 +5,6 @@
 // with one as the sweep of lbm/moving_wall/link_sweep.h), and that sweep against the stages.
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cstring>
 
 #ifdef _OPENMP
@@ -263,33 +262,6 @@ TEST(CouplingReference, LinkSweepGivesTheSeparateStagesBitForBit) {
       EXPECT_NE(stages.absolute, 0.0);
     }
   }
-}
-
-// The sweep takes a node's links one after the other (its moments read once, its slots
-// corrected once): within a block by fluid cell, a node's links in link order, every link
-// once.
-TEST(CouplingReference, LinkSweepTakesEachNodesLinksTogetherInLinkOrder) {
-  const CrowdedLinks crowded;
-  const std::vector<lbm::BoundaryLink>& links = crowded.links.links;
-  lbm::moving_wall::LinkSweep order;
-  order.sort(links, crowded.solver->layout());
-  std::vector<int> seen(links.size(), 0);
-  std::size_t nodes = 0;
-  for (std::size_t b = 0; b < order.num_blocks(); ++b)
-    for (const std::uint32_t* l = order.begin(b); l != order.end(b); ++l) {
-      ++seen[*l];
-      EXPECT_EQ(links[*l].fluid_cell >> lbm::moving_wall::LinkSweep::kBlockShift, b);
-      if (l == order.begin(b) || links[l[-1]].fluid_cell != links[*l].fluid_cell) {
-        ++nodes;
-        continue;
-      }
-      EXPECT_LT(l[-1], *l) << "a node's links in link order";
-    }
-  for (std::size_t b = 0; b < order.num_blocks(); ++b)
-    for (const std::uint32_t* l = order.begin(b); l + 1 < order.end(b); ++l)
-      ASSERT_LE(links[l[0]].fluid_cell, links[l[1]].fluid_cell) << "block " << b;
-  EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), std::ptrdiff_t(links.size()));
-  EXPECT_LT(nodes, links.size() / 2) << "the crowded case has several links per node";
 }
 
 // The sweep's ranges: whole blocks, in order, covering every block, each holding about its

@@ -16,7 +16,7 @@ template void apply<BounceBack>(const std::vector<BoundaryLink>&, const BounceBa
                                 std::vector<std::array<double, 3>>*, int,
                                 std::vector<LinkPopulations>*);
 
-template void sweep<BounceBack>(const std::vector<BoundaryLink>&, LinkSweep&, const BounceBack&,
+template void sweep<BounceBack>(const std::vector<BoundaryLink>&, const LinkSweep&, const BounceBack&,
                                 const BlockLayout&, double, const LinkMassRestorer&, PopulationField&,
                                 std::vector<LinkPopulations>&, std::vector<double>&, int);
 

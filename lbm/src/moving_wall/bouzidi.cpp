@@ -22,7 +22,7 @@ template void apply<Bouzidi>(const std::vector<BoundaryLink>&, const Bouzidi&, c
                              PopulationField&, std::vector<std::array<double, 3>>*, int,
                              std::vector<LinkPopulations>*);
 
-template void sweep<Bouzidi>(const std::vector<BoundaryLink>&, LinkSweep&, const Bouzidi&,
+template void sweep<Bouzidi>(const std::vector<BoundaryLink>&, const LinkSweep&, const Bouzidi&,
                              const BlockLayout&, double, const LinkMassRestorer&, PopulationField&,
                              std::vector<LinkPopulations>&, std::vector<double>&, int);
 

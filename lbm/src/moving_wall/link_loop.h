@@ -41,29 +41,15 @@ struct LinkSlots {
   }
 };
 
-// What a scheme reads of a link's fluid node once for all the node's links: nothing, except
-// for Mei-Luo-Shyy (its moments: mei_luo_shyy.h has the overloads).
-struct NoNodeState {};
+// One link; its `momentum` and `populations` entries written where non-null.
 template <class Scheme>
-NoNodeState node_state(const Scheme& /*scheme*/, const PopulationField& /*f*/, std::size_t /*cell*/) {
-  return {};
-}
-template <class Scheme>
-double returning_population(const Scheme& scheme, const BoundaryLink& link, std::ptrdiff_t offset,
-                            const PopulationField& f, NoNodeState /*node*/) {
-  return scheme.returning_population(link, offset, f);
-}
-
-// One link, with the state of its fluid node; its `momentum` and `populations` entries
-// written where non-null.
-template <class Scheme, class NodeState>
-inline void apply_link(const BoundaryLink& link, const Scheme& scheme, const NodeState& node,
+inline void apply_link(const BoundaryLink& link, const Scheme& scheme,
                        const DirectionOffsets& offsets, const LinkSlots& slots,
                        PopulationField& f, std::array<double, 3>* momentum,
                        LinkPopulations* populations) {
   using L = D3Q19;
   const int q = link.q;
-  const double back = returning_population(scheme, link, offsets.of[q], f, node);
+  const double back = scheme.returning_population(link, offsets.of[q], f);
   Real& slot = slots.back[q][link.fluid_cell];
   slot = static_cast<Real>(back);
   if (populations) *populations = {slots.out[q][link.fluid_cell], slot};
@@ -82,52 +68,32 @@ void apply_range(const std::vector<BoundaryLink>& links, std::size_t first, std:
   const DirectionOffsets offsets(layout);  // once per call
   const LinkSlots slots(offsets, f);
   for (std::size_t l = first; l < last; ++l)
-    apply_link(links[l], scheme, node_state(scheme, f, links[l].fluid_cell), offsets, slots, f,
-               momentum ? &(*momentum)[l] : nullptr, populations ? &(*populations)[l] : nullptr);
-}
-
-// The correction of block c: one removal per node, of the sum of its links' defects, which
-// sweep_blocks left at the node's first position in the block (LinkSweep::node_defects).
-inline void correct_block(const BoundaryLink* link, const LinkSweep& order, const double* node_defect,
-                          const LinkMassRestorer& restorer, std::size_t c) {
-  const std::uint32_t* const base = order.begin(0);
-  for (const std::uint32_t *l = order.begin(c), *end = order.end(c); l != end;) {
-    const std::size_t x = link[*l].fluid_cell;
-    restorer.remove(x, node_defect[l - base]);
-    while (++l != end && link[*l].fluid_cell == x) {
-    }
-  }
+    apply_link(links[l], scheme, offsets, slots, f, momentum ? &(*momentum)[l] : nullptr,
+               populations ? &(*populations)[l] : nullptr);
 }
 
 // Blocks [first, last) of moving_wall::sweep (link_sweep.h) on one thread: block b's links
-// through the scheme, node by node (the scheme reads a node's moments once for all its
-// links), their defects measured and summed per node, then the correction of block b - lag,
-// whose cells no link still to come reads; only blocks in [safe_first, safe_last) are
-// corrected here, the others by sweep's second phase.
+// through the scheme, their defects measured, then the correction of block b - lag, whose
+// cells no link still to come reads; only blocks in [safe_first, safe_last) are corrected
+// here, the others by sweep's second phase.
 template <class Scheme>
 void sweep_blocks(const BoundaryLink* link, const LinkSweep& order, const Scheme& scheme,
                   const DirectionOffsets& offsets, const LinkSlots& slots, double rho0,
                   const LinkMassRestorer& restorer, PopulationField& f, LinkPopulations* pops,
-                  double* defect, double* node_defect, std::size_t first, std::size_t last,
-                  std::size_t safe_first, std::size_t safe_last) {
+                  double* defect, std::size_t first, std::size_t last, std::size_t safe_first,
+                  std::size_t safe_last) {
   const std::size_t lag = order.lag();
-  const std::uint32_t* const base = order.begin(0);
   for (std::size_t b = first; b < last + lag; ++b) {
     if (b < last)
-      for (const std::uint32_t *l = order.begin(b), *end = order.end(b); l != end;) {
-        const std::size_t x = link[*l].fluid_cell;
-        const auto node = node_state(scheme, f, x);
-        double* const sum = &node_defect[l - base];
-        *sum = 0.0;
-        do {  // the node's links, in link order (LinkSweep::sort)
-          apply_link(link[*l], scheme, node, offsets, slots, f, nullptr, &pops[*l]);
-          defect[*l] = link_defect(link[*l], rho0, pops[*l]);
-          *sum += defect[*l];
-        } while (++l != end && link[*l].fluid_cell == x);
+      for (const std::uint32_t *l = order.begin(b), *end = order.end(b); l != end; ++l) {
+        apply_link(link[*l], scheme, offsets, slots, f, nullptr, &pops[*l]);
+        defect[*l] = link_defect(link[*l], rho0, pops[*l]);
       }
     if (b < first + lag) continue;
     const std::size_t c = b - lag;
-    if (c >= safe_first && c < safe_last) correct_block(link, order, node_defect, restorer, c);
+    if (c >= safe_first && c < safe_last)
+      for (const std::uint32_t *l = order.begin(c), *end = order.end(c); l != end; ++l)
+        restorer.remove(link[*l].fluid_cell, defect[*l]);
   }
 }
 
@@ -139,7 +105,7 @@ void sweep_blocks(const BoundaryLink* link, const LinkSweep& order, const Scheme
 // A correction writes only the slots its node pulls, so the order of blocks does not change
 // a bit: the result is the one-thread sweep's for any number of threads.
 template <class Scheme>
-void sweep(const std::vector<BoundaryLink>& links, LinkSweep& order, const Scheme& scheme,
+void sweep(const std::vector<BoundaryLink>& links, const LinkSweep& order, const Scheme& scheme,
            const BlockLayout& layout, double rho0, const LinkMassRestorer& restorer,
            PopulationField& f, std::vector<LinkPopulations>& populations,
            std::vector<double>& per_link, int threads) {
@@ -152,11 +118,10 @@ void sweep(const std::vector<BoundaryLink>& links, LinkSweep& order, const Schem
   const BoundaryLink* const link = links.data();
   LinkPopulations* const pops = populations.data();
   double* const defect = per_link.data();
-  double* const node_defect = order.node_defects();
   const std::size_t blocks = order.num_blocks(), lag = order.lag();
   if (threads <= 1) {
-    sweep_blocks(link, order, scheme, offsets, slots, rho0, restorer, f, pops, defect, node_defect,
-                 0, blocks, 0, blocks);
+    sweep_blocks(link, order, scheme, offsets, slots, rho0, restorer, f, pops, defect, 0, blocks,
+                 0, blocks);
     return;
   }
 #pragma omp parallel num_threads(threads)
@@ -167,10 +132,13 @@ void sweep(const std::vector<BoundaryLink>& links, LinkSweep& order, const Schem
     const std::size_t safe_first = t == 0 ? first : first + lag;
     const std::size_t safe_last = t + 1 == nt ? last : (last > lag ? last - lag : 0);
     sweep_blocks(link, order, for_thread(scheme, t), offsets, slots, rho0, restorer, f, pops,
-                 defect, node_defect, first, last, safe_first, safe_last);
+                 defect, first, last, safe_first, safe_last);
 #pragma omp barrier
-    for (std::size_t c = first; c < last; ++c)
-      if (c < safe_first || c >= safe_last) correct_block(link, order, node_defect, restorer, c);
+    for (std::size_t c = first; c < last; ++c) {
+      if (c >= safe_first && c < safe_last) continue;
+      for (const std::uint32_t *l = order.begin(c), *end = order.end(c); l != end; ++l)
+        restorer.remove(link[*l].fluid_cell, defect[*l]);
+    }
   }
 }
 

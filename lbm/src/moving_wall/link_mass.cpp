@@ -1,7 +1,6 @@
 #include "lbm/moving_wall/link_mass.h"
 
 #include <cmath>
-#include <map>
 
 #include "lbm/d3q19.h"
 #include "lbm/node_type.h"
@@ -46,12 +45,9 @@ void restore_link_mass(const std::vector<BoundaryLink>& links, const BlockLayout
                        const std::vector<std::uint8_t>& node_type,
                        const std::vector<double>& per_link, PopulationField& f) {
   // The defects are all measured before any is removed: removing one writes slots that
-  // another link of the same node reads as its returned population. Each node's links'
-  // defects are summed in link order and removed at once.
-  std::map<std::size_t, double> node_defect;  // from 0.0, as the sweep's sums
-  for (std::size_t l = 0; l < links.size(); ++l) node_defect[links[l].fluid_cell] += per_link[l];
+  // another link of the same node reads as its returned population.
   const LinkMassRestorer restorer(layout, node_type, f);
-  for (const auto& [cell, defect] : node_defect) restorer.remove(cell, defect);
+  for (std::size_t l = 0; l < links.size(); ++l) restorer.remove(links[l].fluid_cell, per_link[l]);
 }
 
 }  // namespace lbm::moving_wall

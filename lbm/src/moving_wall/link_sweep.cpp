@@ -20,17 +20,6 @@ void LinkSweep::sort(const std::vector<BoundaryLink>& links, const BlockLayout& 
   ids_.resize(links.size());
   for (std::size_t l = 0; l < links.size(); ++l)
     ids_[next_[links[l].fluid_cell >> kBlockShift]++] = std::uint32_t(l);
-  // By fluid cell within each block: a stable insertion sort (a block holds a few dozen
-  // links, a node's in link order, since the counting sort above kept it).
-  for (std::size_t b = 0; b < blocks; ++b)
-    for (std::uint32_t i = begin_[b] + 1; i < begin_[b + 1]; ++i) {
-      const std::uint32_t id = ids_[i];
-      const std::size_t cell = links[id].fluid_cell;
-      std::uint32_t j = i;
-      for (; j > begin_[b] && links[ids_[j - 1]].fluid_cell > cell; --j) ids_[j] = ids_[j - 1];
-      ids_[j] = id;
-    }
-  node_defects_.resize(links.size());
   // Cells one link apart (the scheme's reads x - c_q, the correction's writes x - c_p) are
   // at most `reach` indices apart, so at most reach / block + 1 blocks.
   std::ptrdiff_t reach = 0;

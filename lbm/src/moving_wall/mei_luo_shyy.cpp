@@ -8,17 +8,13 @@ namespace lbm::moving_wall {
 
 double MeiLuoShyy::returning_population(const BoundaryLink& link, std::ptrdiff_t offset,
                                         const PopulationField& f) const {
-  return returning_population(link, offset, f, cache->moments(f, link.fluid_cell, body_force, table));
-}
-
-double MeiLuoShyy::returning_population(const BoundaryLink& link, std::ptrdiff_t offset,
-                                        const PopulationField& f, const NodeMoments& m) const {
   using L = D3Q19;
   using Vec3 = std::array<double, 3>;
   const int q = link.q;
   const std::size_t x = link.fluid_cell;
   const double delta = link.fraction;
   const Vec3& uw = link.wall_velocity;
+  const NodeMoments& m = cache->moments(f, x, body_force, table);
   const double rho_f = m.rho;
   const Vec3 u_f = m.u;
   Vec3 u_bf;
@@ -44,7 +40,7 @@ template void apply<MeiLuoShyy>(const std::vector<BoundaryLink>&, const MeiLuoSh
                                 std::vector<std::array<double, 3>>*, int,
                                 std::vector<LinkPopulations>*);
 
-template void sweep<MeiLuoShyy>(const std::vector<BoundaryLink>&, LinkSweep&, const MeiLuoShyy&,
+template void sweep<MeiLuoShyy>(const std::vector<BoundaryLink>&, const LinkSweep&, const MeiLuoShyy&,
                                 const BlockLayout&, double, const LinkMassRestorer&, PopulationField&,
                                 std::vector<LinkPopulations>&, std::vector<double>&, int);
 

@@ -62,7 +62,7 @@ LinkMassDefect link_mass_defect(const std::vector<BoundaryLink>& links, double r
 // contact with a wall or another sphere. The fluid budget books it (doc/stability.md).
 double moving_surface_mass(const std::vector<BoundaryLink>& links, double rho0);
 
-// The correction's writes, one node at a time: remove(x, delta) takes delta w_p from
+// The correction's writes, one link at a time: remove(x, delta_l) takes delta_l w_p from
 // each slot f_p(x - c_p). The arrays' addresses and offsets are taken once, at construction
 // (link_mass_restorer.cpp).
 class LinkMassRestorer {
@@ -83,8 +83,7 @@ class LinkMassRestorer {
   void remove_next_to_open(std::size_t fluid_cell, double defect) const;
 };
 
-// Removes the measured defects as described above, one removal per node of the sum of its
-// links' defects in link order (as the sweep of link_sweep.h); per_link from link_mass_defect.
+// Removes the measured defects as described above; per_link from link_mass_defect.
 // Slots in a ghost beyond an open face (rewritten by the open boundary stage after this one)
 // are not written; their share goes on x's rest population.
 void restore_link_mass(const std::vector<BoundaryLink>& links, const BlockLayout& layout,

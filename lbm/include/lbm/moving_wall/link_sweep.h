@@ -10,16 +10,10 @@
 // for the reads of the scheme (x, x - c_q) and once for the writes of the correction
 // (x - c_p)).
 //
-// Within a block the links are taken node by node (by fluid cell; a node's links in link
-// order): Mei-Luo-Shyy reads a node's moments once for its (about five) links, and the
-// correction writes each node's 19 slots once, with the sum of its links' defects, instead of
-// once per link.
-//
 // Bit-identical to apply_links; link_mass_defect; restore_link_mass: every cell the schemes
-// read is read before any correction writes it; the correction removes from each node the
-// sum of its links' defects taken in link order, as restore_link_mass does (a node's slots
-// are pulled by that node alone, so the order of nodes does not matter); the defect total
-// runs in link order.
+// read is read before any correction writes it; the correction writes the slots of each node
+// in its links' order (the blocks keep link order within them, and a node's slots are pulled
+// by that node alone); the defect sum runs in link order.
 #include <cstdint>
 #include <vector>
 
@@ -34,9 +28,9 @@ class FluidSolver;
 
 namespace lbm::moving_wall {
 
-// The links grouped by block of 2^kBlockShift cells of their fluid node (a counting sort),
-// within a block by fluid cell (stable: a node's links in link order), and the lag of the
-// sweep; with room for one sum of defects per node. Reused between calls, so allocated once.
+// The links grouped by block of kBlockCells cells of their fluid node (a counting sort,
+// stable: link order within a block), and the lag of the sweep. Reused between calls, so
+// allocated once.
 class LinkSweep {
  public:
   static constexpr int kBlockShift = 6;  // blocks of 64 cells
@@ -50,20 +44,16 @@ class LinkSweep {
   // block_of_share(t + 1)) hold about 1/shares of the links, whole blocks; share `shares`
   // starts at num_blocks().
   std::size_t block_of_share(int t, int shares) const;
-  // One value per sorted position (begin(0)[i] has node_defects()[i]): the sweep keeps each
-  // node's defect sum at the position of its first link.
-  double* node_defects() { return node_defects_.data(); }
 
  private:
   std::vector<std::uint32_t> begin_, next_, ids_;
-  std::vector<double> node_defects_;
   std::size_t lag_ = 0;
 };
 
 // The loop of the sweep for one scheme (link_loop.h): fills `populations` (as apply_links)
 // and `per_link` (as link_mass_defect) and corrects the mass (as restore_link_mass).
 template <class Scheme>
-void sweep(const std::vector<BoundaryLink>& links, LinkSweep& order, const Scheme& scheme,
+void sweep(const std::vector<BoundaryLink>& links, const LinkSweep& order, const Scheme& scheme,
            const BlockLayout& layout, double rho0, const LinkMassRestorer& restorer,
            PopulationField& f, std::vector<LinkPopulations>& populations,
            std::vector<double>& per_link, int threads);

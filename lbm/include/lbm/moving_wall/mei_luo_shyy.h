@@ -31,20 +31,7 @@ struct MeiLuoShyy {
 
   double returning_population(const BoundaryLink& link, std::ptrdiff_t offset,
                               const PopulationField& f) const;
-  // The same with the moments of the link's fluid node given (read once for all its links).
-  double returning_population(const BoundaryLink& link, std::ptrdiff_t offset,
-                              const PopulationField& f, const NodeMoments& at_fluid_node) const;
 };
-
-// The loops of link_loop.h read the moments of a node once for all its links.
-inline NodeMoments node_state(const MeiLuoShyy& scheme, const PopulationField& f, std::size_t cell) {
-  return scheme.cache->moments(f, cell, scheme.body_force, scheme.table);
-}
-inline double returning_population(const MeiLuoShyy& scheme, const BoundaryLink& link,
-                                   std::ptrdiff_t offset, const PopulationField& f,
-                                   const NodeMoments& node) {
-  return scheme.returning_population(link, offset, f, node);
-}
 
 // The copy of `scheme` that thread t of moving_wall::apply runs: its own cache table.
 inline MeiLuoShyy for_thread(const MeiLuoShyy& scheme, int t) {
