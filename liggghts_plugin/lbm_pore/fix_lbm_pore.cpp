@@ -58,6 +58,13 @@ FixLbmPore::FixLbmPore(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg, arg) 
   extvector = 0;
   restart_global = 1;
   restart_peratom = 1;
+  // LIGGGHTS's insertions (ParticleToInsert::insert) call set_arrays for a new atom only
+  // where this is set. Without it a new atom kept whatever its slot held, which the tag
+  // check of AtomStates::own catches only while tags are not reused, and insertion reuses
+  // them (Atom::tag_extend numbers new atoms from the largest tag left): a new particle once
+  // took a former one's previous position and stopped a long run with "moves 38.2 cells per
+  // fluid step" at its first fluid step (doc/calibration.md).
+  create_attribute = 1;
   // LIGGGHTS calls end_of_step only on steps that are multiples of nevery: the fluid step's
   // own test (end_of_step) then holds on every call, and the 99 substeps in between cost
   // no call at all (Modify::end_of_step's modulo instead of a virtual call each).

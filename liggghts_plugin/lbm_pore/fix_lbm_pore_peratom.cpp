@@ -53,8 +53,13 @@ void FixLbmPore::grow_arrays(int nmax) {
   array_atom = hydrodynamic_force_;
 }
 
-// A new atom (fix insert/...) starts with no load and no previous position.
-void FixLbmPore::set_arrays(int i) { states_.reset(i, atom->tag[i]); }
+// A new atom (fix insert/..., create_attribute) starts with no load and no previous
+// position. Insertion calls this before it numbers the atom (tag 0): AtomStates::own then
+// resets the slot again under the atom's tag at its first fluid step, which changes nothing.
+void FixLbmPore::set_arrays(int i) {
+  states_.reset(i, atom->tag[i]);
+  for (int a = 0; a < 3; ++a) hydrodynamic_force_[i][a] = 0.0;
+}
 
 void FixLbmPore::copy_arrays(int i, int j, int) {
   states_[j] = states_[i];

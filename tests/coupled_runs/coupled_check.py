@@ -5,7 +5,7 @@ with its bound (tests/harness/liggghts_run.py); exits 1 when one fails.
 
 usage: coupled_check.py --driver liggghts-lbm --scripts DIR [--mpirun mpirun] CASE
 CASE: adhesion | clog | clog_pressure | parallel | mpi_splits | outputs | restart | bad_arguments |
-      substep_force
+      substep_force | reused_tag
 """
 import math
 import os
@@ -215,6 +215,26 @@ def case_substep_force(h):
           f"vx {b['vx']:.3g} against {a['vx']:.3g} held", "< 0.2 of the held run's")
 
 
+def case_reused_tag(h):
+    """A particle inserted mid-run in the slot of one that left under the same (reused) tag
+    starts its coupling state afresh (fix lbm/pore's create_attribute and set_arrays): its
+    first fluid steps' displacement is what it moved, not the 25 cells to where the former
+    particle was last seen (in.reused_tag), and the run goes on."""
+    run = h.run("in.reused_tag", {}, expect_error=True)
+    rows = thermo_rows(run.output)
+    before = [r for r in rows if r["Step"] <= 5000]
+    after = [r for r in rows if r["Step"] > 5000]
+    check("reused_tag_first_particle_left", bool(before) and before[-1]["Atoms"] == 0,
+          f"{before[-1]['Atoms'] if before else None} particles at step 5000", "0 (it left the box)")
+    check("reused_tag_inserted_particle_present", bool(after) and after[-1]["Atoms"] == 1,
+          f"{after[-1]['Atoms'] if after else None} particles at the end", "1")
+    check("reused_tag_run_completes", run.code == 0 and bool(after) and after[-1]["Step"] == 6000,
+          error_line(run.output) or f"last step {after[-1]['Step'] if after else None}", "runs to step 6000")
+    shift = max(r["shift"] for r in after) if after else float("inf")
+    check("reused_tag_new_particle_moves_as_carried", shift < 0.5,
+          f"largest displacement per fluid step {shift:.3g} cells", "< 0.5 (the speed guard's limit)")
+
+
 def case_mpi_splits(h):
     """1 rank against 3 (processors 3 1 1) and 4 (2 2 1, 1 2 2; oversubscribed on 2 cores).
     In in.transit a weak gravity along (0, 1, 1) makes particle 1 sink across y = 10 and
@@ -353,4 +373,5 @@ if __name__ == "__main__":
     main({"adhesion": case_adhesion, "clog": case_clog, "clog_pressure": case_clog_pressure,
           "parallel": case_parallel, "mpi_splits": case_mpi_splits, "outputs": case_outputs,
           "restart": case_restart, "bad_arguments": case_bad_arguments,
-          "threads_on_one_core": case_threads_on_one_core, "substep_force": case_substep_force}, __doc__)
+          "threads_on_one_core": case_threads_on_one_core, "substep_force": case_substep_force,
+          "reused_tag": case_reused_tag}, __doc__)
