@@ -79,6 +79,7 @@ void FixLbmPore::post_run() {
   // A signal that came after the last step's post_integrate: every rank takes it here, so
   // LIGGGHTS's input loop stops after this run on all of them.
   lbm_pore::take_stop_requests(world);
+  const std::string balance = timer_.balance_report(*coupling_, solver_->decomposition().comm);
   if (comm->me != 0) return;
-  lbm_pore::print_to_screen_and_log(screen, logfile, timer_.report(*coupling_).c_str());
+  lbm_pore::print_to_screen_and_log(screen, logfile, (timer_.report(*coupling_) + balance).c_str());
 }

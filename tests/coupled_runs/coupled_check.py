@@ -119,8 +119,14 @@ def case_parallel(h):
     node uncovered next to the boundary was refilled from one-step-old halo densities and the
     runs drifted apart by 1e-7 after the crossing.)"""
     variables = {"steps": 200000}
-    serial = thermo_rows(h.run("in.transit", dict(variables, px=1)).output)
-    split = thermo_rows(h.run("in.transit", dict(variables, px=2), ranks=2).output)
+    serial_run = h.run("in.transit", dict(variables, px=1))
+    split_run = h.run("in.transit", dict(variables, px=2), ranks=2)
+    serial, split = thermo_rows(serial_run.output), thermo_rows(split_run.output)
+    # The end-of-run report compares the ranks' work (RunTimer::balance_report) on 2 ranks only.
+    balance = next((line for line in split_run.output.splitlines() if "balance over 2 ranks" in line), "")
+    check("parallel_report_compares_the_ranks", "links per fluid step" in balance
+          and "balance over" not in serial_run.output, repr(balance[:120]),
+          "a 'balance over 2 ranks' line on 2 ranks, none on 1")
     crossed = any(r["x1"] > 15.0 for r in serial)
     check("parallel_particle_crossed_the_rank_boundary", crossed, crossed, "x1 > 15 at some step")
     check("parallel_same_rows", len(split) == len(serial) > 10, f"{len(split)} vs {len(serial)}",

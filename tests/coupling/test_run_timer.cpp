@@ -68,6 +68,18 @@ TEST(RunTimer, TheReportReadsTheCouplingsStageTimes) {
   EXPECT_EQ(report.find("halo exchange of the coupled steps"), std::string::npos);  // none counted
 }
 
+// The balance line compares ranks: on one rank there is nothing to compare (the 2-rank line
+// is checked by the pore_parallel integration test).
+TEST(RunTimer, TheBalanceLineNeedsMoreThanOneRank) {
+  auto solver = cases::make_solver({8, 8, 8}, {true, true, true});
+  coupling::SphereCoupling coupling(*solver);
+  RunTimer timer(test_clock);
+  g_now = 0.0;
+  timer.start();
+  timer.count_fluid_step();
+  EXPECT_EQ(timer.balance_report(coupling, solver->decomposition().comm), "");
+}
+
 // The fourth line counts the links the coupling applied per step, as the links of the step
 // are: a sphere at rest keeps the same links every step.
 TEST(RunTimer, TheReportCountsTheLinksPerStep) {

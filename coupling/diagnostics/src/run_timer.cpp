@@ -64,4 +64,29 @@ std::string RunTimer::report(const SphereCoupling& coupling) const {
   return text;
 }
 
+std::string RunTimer::balance_report(const SphereCoupling& coupling, const lbm::Communicator& comm) const {
+  const int ranks = comm.size();
+  if (ranks <= 1) return "";
+  const StageTimes& t = coupling.times();
+  const LinkCounts& links = coupling.link_counts();
+  const double total = clock_() - start_;
+  const double* s = seconds_;
+  // This rank's links per fluid step, coupling stages and DEM and the rest.
+  double mean[3] = {links.steps > 0 ? double(links.links) / double(links.steps) : 0.0,
+                    t.mapping + t.refill + t.moving_walls + t.force,
+                    total - s[kFluid] - s[kLubrication] - s[kDiagnostics]};
+  double most[3] = {mean[0], mean[1], mean[2]};
+  comm.sum(mean, 3);
+  comm.max(most, 3);
+  if (fluid_steps_ == 0 || mean[0] <= 0.0) return "";
+  for (double& m : mean) m /= ranks;
+  char text[400];
+  std::snprintf(text, sizeof text,
+                "fix lbm/pore: balance over %d ranks (mean, busiest rank): links per fluid step "
+                "%.0f, %.0f; mapping, refill, moving walls and force %.3f s, %.3f s; DEM and the "
+                "rest %.3f s, %.3f s\n",
+                ranks, mean[0], most[0], mean[1], most[1], mean[2], most[2]);
+  return text;
+}
+
 }  // namespace coupling

@@ -8,6 +8,7 @@
 
 #include "coupling/sphere_coupling.h"
 #include "coupling/stage_clock.h"
+#include "lbm/communicator.h"
 
 namespace coupling {
 
@@ -46,6 +47,13 @@ class RunTimer {
   // gives the links per step and the coupling stages' cost per link, in ns and in
   // fluid-cell updates of the same run's collide-stream (this rank's figures).
   std::string report(const SphereCoupling& coupling) const;
+  // On more than one rank, once links were applied: one line comparing the ranks, the mean
+  // and the busiest rank's links per fluid step, coupling stages (mapping, refill, moving
+  // walls and force) and DEM and the rest. A stage's time on one rank includes its waits for
+  // the others at the step's collective calls, so the stage figures of report() alone do
+  // not show which rank holds the work. Collective over `comm` (every rank calls it; all get
+  // the line); "" on one rank.
+  std::string balance_report(const SphereCoupling& coupling, const lbm::Communicator& comm) const;
 
  private:
   static constexpr int kRest = -1;  // outside every scope
