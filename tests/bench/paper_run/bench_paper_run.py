@@ -30,6 +30,9 @@ rounds, and the median and spread (min, max) of the rounds are printed. Per stat
         (mapping, refill, halo, static_walls, moving_walls, force, open_faces, collide_stream)
         and lubrication, diagnostics, dem_and_rest (the DEM substeps and LIGGGHTS's own work)
   BENCH paper_run_<state>_links_per_step            (rank 0)
+  BENCH paper_run_<state>_links_busiest_rank_vs_mean, _coupling_busiest_rank_vs_mean  the
+        busiest rank's links per step and coupling stages' seconds over the ranks' mean (a
+        stage's time includes the waits at collective calls: these say where the work is)
   BENCH paper_run_<state>_ns_per_link                mapping + refill + moving walls + force
   BENCH paper_run_<state>_coupling_fluid_cell_updates_per_link  the same in collide-stream
         updates of the same run (goal <= 1)
@@ -87,6 +90,9 @@ STAGE_LINE = re.compile(r"fix lbm/pore: coupling stages since the lattice was bu
 LINK_LINE = re.compile(
     r"links of the moving surfaces on this rank: ([\d.]+) per fluid step; mapping, refill, moving "
     r"walls and force ([\d.]+) ns per link, ([\d.]+) fluid-cell updates per link")
+BALANCE_LINE = re.compile(
+    r"balance over \d+ ranks \(mean, busiest rank\): links per fluid step ([\d.]+), ([\d.]+); mapping, "
+    r"refill, moving walls and force ([\d.]+) s, ([\d.]+) s; DEM and the rest ([\d.]+) s, ([\d.]+) s")
 STAGES = ["mapping", "refill", "halo", "static walls", "moving walls", "force", "open faces", "collide-stream"]
 LINK_STAGES = ["mapping", "refill", "moving walls", "force"]
 
@@ -192,6 +198,11 @@ def time_state(args, state, folder, driver=None):
     # A driver older than the link report (a before/after comparison) gives no link figures.
     result["links"], result["ns_per_link"], result["fcu_per_link"] = (
         (float(v) for v in links[-1]) if links else (float("nan"),) * 3)
+    # The busiest rank against the mean (RunTimer::balance_report; nan from an older driver).
+    balance = BALANCE_LINE.findall(out)
+    b = [float(v) for v in balance[-1]] if balance else [float("nan")] * 6
+    result["links_busiest_vs_mean"] = b[1] / b[0] if b[0] else float("nan")
+    result["coupling_busiest_vs_mean"] = b[3] / b[2] if b[2] else float("nan")
     rows = thermo_rows(out)
     result["particles"], result["deposited"] = (rows[-1][1], rows[-1][2]) if rows else (0, 0)
     return result
@@ -277,6 +288,8 @@ def main():
             print(f"BENCH {name}_{key.replace(' ', '_').replace('-', '_')}_ms {1e3 * value:.3f} ms")
         print(f"BENCH {name}_links_per_step {median('links'):.0f} count")
         print(f"BENCH {name}_ns_per_link {median('ns_per_link'):.1f} ns")
+        print(f"BENCH {name}_links_busiest_rank_vs_mean {median('links_busiest_vs_mean'):.3f} ratio")
+        print(f"BENCH {name}_coupling_busiest_rank_vs_mean {median('coupling_busiest_vs_mean'):.3f} ratio")
         fcu = median("fcu_per_link")
         print(f"BENCH {name}_coupling_fluid_cell_updates_per_link {fcu:.2f} ratio")
         # The parts are medians of their own; the projections scale the median step by them.
