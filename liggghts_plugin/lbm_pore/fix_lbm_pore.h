@@ -123,6 +123,7 @@ class FixLbmPore : public Fix {
   class NeighList* list_ = nullptr;
   std::string resume_checkpoint_;  // set by restart(): read once the lattice exists
   bool resumed_ = false;           // the mapping must be rebuilt from the checkpoint
+  bool fast_flow_warned_ = false;  // coupling::fast_flow_warning said (once per run)
   long long fluid_steps_ = 0;
   coupling::RunTimer timer_;  // where the time of a run went
 };

@@ -72,7 +72,20 @@ void FixLbmPore::record_fluid_step() {
 double FixLbmPore::compute_array(int row, int column) { return monitor_->burst_value(row, column); }
 
 // Called on every rank by thermo output and variables, so the reductions inside are safe.
-double FixLbmPore::compute_vector(int index) { return monitor_->value(index, *solver_, fluid_steps_); }
+// The fluid values it reads include the lattice Mach number: a flow beyond the lattice's
+// accuracy is said once per run.
+double FixLbmPore::compute_vector(int index) {
+  const double value = monitor_->value(index, *solver_, fluid_steps_);
+  if (!fast_flow_warned_) {
+    const std::string warning = coupling::fast_flow_warning(
+        monitor_->values()[coupling::PoreMonitor::kLatticeMach], fluid_steps_);
+    if (!warning.empty()) {
+      fast_flow_warned_ = true;
+      if (comm->me == 0) error->warning(FLERR, warning.c_str());
+    }
+  }
+  return value;
+}
 
 // Where the time of the run went, on rank 0.
 void FixLbmPore::post_run() {

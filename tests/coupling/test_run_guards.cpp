@@ -56,3 +56,14 @@ TEST(Bonds, AParticleTouchesTheWallFromItsFollowedNearestWallOrBySearch) {
   EXPECT_TRUE(touches_wall(nullptr, surface, {1.0, 4.0, 4.0}, 1.0, scratch));  // searched
   EXPECT_FALSE(touches_wall(nullptr, surface, {6.0, 4.0, 4.0}, 1.0, scratch));
 }
+
+// A flow beyond the lattice's accuracy is named with its Mach number and step and what lowers
+// it; at or below the bound nothing is said (a NaN, which the fluid guard reports, neither).
+TEST(RunGuards, FastFlowWarningAboveTheAccurateMachNumber) {
+  EXPECT_EQ(coupling::fast_flow_warning(0.29, 10), "");
+  EXPECT_EQ(coupling::fast_flow_warning(coupling::kAccurateLatticeMach, 10), "");
+  EXPECT_EQ(coupling::fast_flow_warning(std::nan(""), 10), "");
+  const std::string warning = coupling::fast_flow_warning(0.99, 12345);
+  for (const char* words : {"Mach number reached 0.99", "fluid step 12345", "u_lattice", "finer lattice"})
+    EXPECT_NE(warning.find(words), std::string::npos) << words << " in: " << warning;
+}

@@ -1,5 +1,7 @@
 #include "coupling/diagnostics/run_guards.h"
 
+#include <cstdio>
+
 #include "coupling/diagnostics/particle_probes.h"
 #include "coupling/periodic_box.h"
 #include "lbm/stability.h"
@@ -31,6 +33,18 @@ GuardVerdict fluid_state_guard(const lbm::FluidSolver& solver, const ParticleVie
   verdict.message = "fluid became unstable at DEM step " + std::to_string(dem_step) + " (fluid step " +
                     std::to_string(fluid_step) + "), " + problem.describe() + instability_cause(nearest);
   return verdict;
+}
+
+std::string fast_flow_warning(double lattice_mach, long long fluid_step) {
+  if (!(lattice_mach > kAccurateLatticeMach)) return "";
+  char text[400];
+  std::snprintf(text, sizeof text,
+                "fix lbm/pore: the lattice Mach number reached %.2f at fluid step %lld (above %.1f "
+                "the lattice's compressibility error passes 10 %%; said once): the flow "
+                "there, typically a jet through the gaps of a clogged pore, is not resolved "
+                "faithfully; a lower inlet velocity (u_lattice) or a finer lattice lowers it",
+                lattice_mach, fluid_step, kAccurateLatticeMach);
+  return text;
 }
 
 }  // namespace coupling

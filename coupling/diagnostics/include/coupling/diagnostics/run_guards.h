@@ -33,4 +33,14 @@ constexpr double kRunawayFluidSpeed = 0.5;
 GuardVerdict fluid_state_guard(const lbm::FluidSolver& solver, const ParticleView& view, long long dem_step,
                                long long fluid_step);
 
+// Above this lattice Mach number the scheme's compressibility error (of the order of Ma^2)
+// passes 10 %: the flow is still computed, but not faithfully. Jets through the gaps of a
+// clogged pore reach it between the fluid guard's checks (doc/calibration.md).
+constexpr double kAccurateLatticeMach = 0.3;
+
+// A warning, or "" at or below kAccurateLatticeMach: the largest lattice Mach number seen
+// (f_pore[10]) and the fluid step, what it means and what lowers it. The host says it once,
+// the first time.
+std::string fast_flow_warning(double lattice_mach, long long fluid_step);
+
 }  // namespace coupling
