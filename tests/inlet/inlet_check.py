@@ -68,10 +68,10 @@ def concentration_two_ranks(harness):
 
 
 def bad_knobs(harness):
-    """A negative insertion period or minimum gap stops in.pore with an error naming the knob
-    and its range, before any step."""
+    """A negative insertion period, minimum gap or deposit speed stops in.pore with an error
+    naming the knob and its range, before any step."""
     scripts = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "examples", "pore")
-    for knob in ("insert_period", "min_gap"):
+    for knob in ("insert_period", "min_gap", "deposit_speed"):
         run = harness.run(os.path.join(scripts, "in.pore"),
                           {"cells_per_d": 4, "warmup": 100, "steps": 100, "vtk_every": 0, knob: -1},
                           expect_error=True, timeout=60)
