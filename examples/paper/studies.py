@@ -241,15 +241,17 @@ def calibration(size):
 
 
 # The model's open points (doc/calibration.md), each as the knobs that switch it from in.pore's
-# default. deposit_region changes what counts, not the physics: its twin repeats the base
-# run's trajectory and counts the deposits inside the pore alone.
+# default. deposit_region and deposit_speed change what counts, not the physics: their twins
+# repeat the base run's trajectory and count the deposits inside the pore alone, or every
+# bonded particle slower than half of u_in (the default: a tenth).
 # (in.pore inserts with the paper's min_gap 0.25; its twin inserts without a distance. Study
 # folders made while the default was 0 hold the other way round: a base at 0 and a twin
 # `_min_gap` at 0.25.)
 MODEL_TWINS = (("no_gap", {"min_gap": 0}),
                ("keep_pressure", {"reference_pressure": "keep"}),
                ("fraction", {"substep_force": "fraction"}),
-               ("pore_deposits", {"deposit_region": "pore"}))
+               ("pore_deposits", {"deposit_region": "pore"}),
+               ("slow_deposits", {"deposit_speed": 0.5}))
 
 
 STUDIES = {f.__name__: f for f in (singlejump, collection, dropvol, porelength, porediameter,

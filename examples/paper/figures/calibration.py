@@ -100,7 +100,8 @@ def table(rows):
 VARIANTS = (("", "N_DEM 100, 7.1 cells/d"), ("_n_dem_20", "N_DEM 20"), ("_5_cells_per_d", "5 cells/d"),
             ("_min_gap", "min_gap 0.25 d"), ("_no_gap", "no minimum insertion distance"),
             ("_keep_pressure", "reference pressure kept"),
-            ("_fraction", "F_h / N_DEM per substep"), ("_pore_deposits", "deposits in the pore only"))
+            ("_fraction", "F_h / N_DEM per substep"), ("_pore_deposits", "deposits in the pore only"),
+            ("_slow_deposits", "deposited below u_in / 2"))
 
 
 def variant_label(name):
