@@ -229,40 +229,53 @@ void FluidSolver::apply_wall_bounce_back() {
   for (long l = 0; l < n; ++l) data[slot[std::size_t(l)]] = data[source[std::size_t(l)]];
 }
 
-void FluidSolver::apply_open_boundaries() {
-  open_face_mass_[0] = open_face_mass_[1] = 0.0;
-  if (drive_.kind == FlowDrive::kNone) return;
+std::optional<OpenFace> FluidSolver::open_face(int side) const {
+  if (drive_.kind == FlowDrive::kNone) return std::nullopt;
   const int a = drive_.axis;
   const Box& global = decomposition_.global;
   const Box& owned = decomposition_.owned;
-  if (owned.lo[a] == global.lo[a]) {
-    OpenFace inlet;
-    inlet.axis = a;
-    inlet.inward = +1;
-    inlet.local_plane = 0;
+  OpenFace face;
+  face.axis = a;
+  face.momentum_density = parameters_.incompressible ? parameters_.rho0 : 0.0;
+  if (side == 0) {
+    if (owned.lo[a] != global.lo[a]) return std::nullopt;
+    face.inward = +1;
+    face.local_plane = 0;
     if (drive_.kind == FlowDrive::kInletVelocity) {
-      inlet.kind = OpenFace::kVelocity;
-      inlet.value = drive_.inlet_velocity;
+      face.kind = OpenFace::kVelocity;
+      face.value = drive_.inlet_velocity;
     } else {
       // p = cs^2 rho, so a pressure loss dp needs rho_in = rho_out + dp / cs^2.
-      inlet.kind = OpenFace::kDensity;
-      inlet.value = drive_.outlet_density + drive_.pressure_loss / D3Q19::cs2;
+      face.kind = OpenFace::kDensity;
+      face.value = drive_.outlet_density + drive_.pressure_loss / D3Q19::cs2;
     }
-    inlet.momentum_density = parameters_.incompressible ? parameters_.rho0 : 0.0;
-    apply_open_face(inlet, layout_, node_type_, f_);
-    open_face_mass_[0] = lbm::open_face_mass(inlet, layout_, node_type_, f_);
+    return face;
   }
-  if (owned.hi[a] == global.hi[a]) {
-    OpenFace outlet;
-    outlet.axis = a;
-    outlet.inward = -1;
-    outlet.local_plane = layout_.size(a) - 1;
-    outlet.kind = OpenFace::kDensity;
-    outlet.value = drive_.outlet_density;
-    outlet.momentum_density = parameters_.incompressible ? parameters_.rho0 : 0.0;
-    apply_open_face(outlet, layout_, node_type_, f_);
-    open_face_mass_[1] = lbm::open_face_mass(outlet, layout_, node_type_, f_);
+  if (owned.hi[a] != global.hi[a]) return std::nullopt;
+  face.inward = -1;
+  face.local_plane = layout_.size(a) - 1;
+  face.kind = OpenFace::kDensity;
+  face.value = drive_.outlet_density;
+  return face;
+}
+
+void FluidSolver::apply_open_boundaries() {
+  for (int side = 0; side < 2; ++side) {
+    open_face_mass_[side] = 0.0;
+    if (const std::optional<OpenFace> face = open_face(side)) {
+      apply_open_face(*face, layout_, node_type_, f_);
+      open_face_mass_[side] = lbm::open_face_mass(*face, layout_, node_type_, f_);
+    }
   }
+}
+
+double FluidSolver::open_face_density(std::size_t cell) const {
+  const int a = drive_.axis;
+  for (int side = 0; side < 2; ++side)
+    if (const std::optional<OpenFace> face = open_face(side))
+      if (layout_.coords(cell)[std::size_t(a)] == face->local_plane && node_type_[cell] == kFluid)
+        return open_face_node_density(*face, layout_, f_, cell);
+  return parameters_.rho0;
 }
 
 void FluidSolver::collide_stream() {

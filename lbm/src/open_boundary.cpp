@@ -23,6 +23,63 @@ void for_face_nodes_in_parallel(const OpenFace& face, const BlockLayout& layout,
   detail::for_plane_fluid_nodes_in_parallel(layout, node_type, face.axis, face.local_plane, visit, ahead);
 }
 
+// What a face node knows after streaming, from its populations post[q] = f*_q(x - c_q): the
+// sums over the directions along the face (T, with their transverse momenta) and those
+// pointing out of the lattice (O). The q loop unrolls and every test of c_q along the normal
+// folds away.
+struct KnownSums {
+  double tangential = 0.0, outgoing = 0.0;
+  double transverse[3] = {0.0, 0.0, 0.0};
+};
+template <int kAxis, int kInward>
+KnownSums known_sums(const double* post) {
+  using L = D3Q19;
+  constexpr int t1 = (kAxis + 1) % 3, t2 = (kAxis + 2) % 3;  // tangential axes
+  KnownSums k;
+#pragma GCC unroll 19
+  for (int q = 0; q < L::Q; ++q) {
+    const int cn = L::c[q][kAxis] * kInward;
+    if (cn == 0) {
+      k.tangential += post[q];
+      k.transverse[t1] += post[q] * L::c[q][t1];
+      k.transverse[t2] += post[q] * L::c[q][t2];
+    } else if (cn < 0) {
+      k.outgoing += post[q];
+    }
+  }
+  return k;
+}
+
+// The node's density rho, its velocity along the inward normal u_n and the momentum density m
+// (m u_n the normal momentum) that the face imposes, from what the node knows.
+struct ImposedState {
+  double rho, u_n, m;
+};
+template <int kInward>
+ImposedState imposed_state(const OpenFace& face, const KnownSums& k) {
+  // u_n is the velocity along the inward normal; rho = T + O + I and m u_n = I - O with
+  // m = rho (standard) or rho0 (incompressible), so rho - m u_n = T + 2 O.
+  double rho, u_n, m;
+  const double known = k.tangential + 2.0 * k.outgoing;
+  if (face.momentum_density > 0.0) {
+    m = face.momentum_density;
+    if (face.kind == OpenFace::kVelocity) {
+      u_n = face.value * kInward;
+      rho = known + m * u_n;
+    } else {
+      rho = face.value;
+      u_n = (rho - known) / m;
+    }
+  } else if (face.kind == OpenFace::kVelocity) {
+    u_n = face.value * kInward;
+    rho = m = known / (1.0 - u_n);
+  } else {
+    rho = m = face.value;
+    u_n = 1.0 - known / rho;
+  }
+  return {rho, u_n, m};
+}
+
 // One face, its axis and inward direction known at compile time: the q loops unroll and
 // every test of c_q along the normal folds away (the same sums in the same order as the
 // loops over q with those tests at run time; every product with a c_q component is exact).
@@ -49,54 +106,32 @@ void apply_face(const OpenFace& face, const BlockLayout& layout,
     double post[L::Q];
 #pragma GCC unroll 19
     for (int q = 0; q < L::Q; ++q) post[q] = pulled[q][cell];
-
-    double tangential_sum = 0.0, outgoing_sum = 0.0;
-    double transverse[3] = {0.0, 0.0, 0.0};
-#pragma GCC unroll 19
-    for (int q = 0; q < L::Q; ++q) {
-      const int cn = L::c[q][a] * kInward;
-      if (cn == 0) {
-        tangential_sum += post[q];
-        transverse[t1] += post[q] * L::c[q][t1];
-        transverse[t2] += post[q] * L::c[q][t2];
-      } else if (cn < 0) {
-        outgoing_sum += post[q];
-      }
-    }
-    // u_n is the velocity along the inward normal; rho = T + O + I and m u_n = I - O with
-    // m = rho (standard) or rho0 (incompressible), so rho - m u_n = T + 2 O.
-    double rho, u_n, m;
-    const double known = tangential_sum + 2.0 * outgoing_sum;
-    if (face.momentum_density > 0.0) {
-      m = face.momentum_density;
-      if (face.kind == OpenFace::kVelocity) {
-        u_n = face.value * kInward;
-        rho = known + m * u_n;
-      } else {
-        rho = face.value;
-        u_n = (rho - known) / m;
-      }
-    } else if (face.kind == OpenFace::kVelocity) {
-      u_n = face.value * kInward;
-      rho = m = known / (1.0 - u_n);
-    } else {
-      rho = m = face.value;
-      u_n = 1.0 - known / rho;
-    }
+    const KnownSums k = known_sums<kAxis, kInward>(post);
+    const ImposedState state = imposed_state<kInward>(face, k);
     double u[3] = {0.0, 0.0, 0.0};
-    u[a] = u_n * kInward;
+    u[a] = state.u_n * kInward;
     // Transverse momentum correction N_t = 1/2 sum_{c.n=0} f c_t - rho u_t / 3 (u_t = 0).
-    const double n1 = 0.5 * transverse[t1], n2 = 0.5 * transverse[t2];
+    const double n1 = 0.5 * k.transverse[t1], n2 = 0.5 * k.transverse[t2];
 #pragma GCC unroll 19
     for (int q = 0; q < L::Q; ++q) {
       if (L::c[q][a] * kInward <= 0) continue;  // known
       const int qo = L::opposite(q);
       const double cu = L::c[q][0] * u[0] + L::c[q][1] * u[1] + L::c[q][2] * u[2];
       const double value =
-          post[qo] + 6.0 * L::w[q] * m * cu - (L::c[q][t1] * n1 + L::c[q][t2] * n2);
+          post[qo] + 6.0 * L::w[q] * state.m * cu - (L::c[q][t1] * n1 + L::c[q][t2] * n2);
       pulled[q][cell] = static_cast<Real>(value);
     }
   }, prefetch);
+}
+
+template <int kAxis, int kInward>
+double node_density(const OpenFace& face, const BlockLayout& layout, const PopulationField& f,
+                    std::size_t cell) {
+  using L = D3Q19;
+  double post[L::Q];
+  for (int q = 0; q < L::Q; ++q)
+    post[q] = f.q(q)[cell - layout.offset(L::c[q][0], L::c[q][1], L::c[q][2])];
+  return imposed_state<kInward>(face, known_sums<kAxis, kInward>(post)).rho;
 }
 
 template <int kAxis, int kInward>
@@ -145,6 +180,13 @@ void apply_open_face(const OpenFace& face, const BlockLayout& layout,
                      const std::vector<std::uint8_t>& node_type, PopulationField& f) {
   by_face(face, [&](auto axis, auto inward) {
     apply_face<decltype(axis)::value, decltype(inward)::value>(face, layout, node_type, f);
+  });
+}
+
+double open_face_node_density(const OpenFace& face, const BlockLayout& layout, const PopulationField& f,
+                              std::size_t cell) {
+  return by_face(face, [&](auto axis, auto inward) {
+    return node_density<decltype(axis)::value, decltype(inward)::value>(face, layout, f, cell);
   });
 }
 

@@ -9,6 +9,7 @@
 #include <omp.h>
 #endif
 
+#include "lbm/d3q19.h"
 #include "lbm/node_type.h"
 #include "lbm/thread_team.h"
 #include "plane_moments.h"
@@ -85,6 +86,14 @@ bool node_is_fine(const FluidSolver& solver, std::size_t cell, double max_speed,
   return std::isfinite(rho) && rho > 0.0 && std::isfinite(speed) && speed <= max_speed;
 }
 
+int wall_links(const FluidSolver& solver, std::size_t cell) {
+  const BlockLayout& g = solver.layout();
+  int n = 0;
+  for (int q = 1; q < D3Q19::Q; ++q)
+    n += solver.node_types()[cell + g.offset(D3Q19::c[q][0], D3Q19::c[q][1], D3Q19::c[q][2])] == kSolid;
+  return n;
+}
+
 // The first bad node of planes [k_first, k_last) in scan order. Each plane's moments come
 // from one pass over the 19 arrays (plane_moments, the thermo totals' pass); a node whose
 // |u|^2 there lies clearly below the limit is fine (those moments are density()'s and
@@ -110,6 +119,7 @@ FluidStateProblem first_problem(const FluidSolver& solver, double max_speed, int
         problem.node = g.to_global(i, j, k);
         problem.density = rho;
         problem.speed = speed;
+        problem.wall_links = wall_links(solver, cell);
         return problem;
       }
   }
@@ -136,6 +146,27 @@ FluidStateProblem check_fluid_state(const FluidSolver& solver, double max_speed)
   for (const FluidStateProblem& problem : found)
     if (problem.found) return problem;
   return {};
+}
+
+FluidStateProblem fastest_node(const FluidSolver& solver) {
+  FluidStateProblem fastest;
+  fastest.speed = -1.0;
+  const BlockLayout& g = solver.layout();
+  std::size_t at = 0;
+  for_owned_fluid(solver, [&](std::size_t cell, int i, int j, int k) {
+    double rho, speed;
+    node_is_fine(solver, cell, 0.0, rho, speed);
+    if (!(speed > fastest.speed)) return true;
+    fastest.found = true;
+    fastest.node = g.to_global(i, j, k);
+    fastest.density = rho;
+    fastest.speed = speed;
+    at = cell;
+    return true;
+  });
+  if (fastest.found) fastest.wall_links = wall_links(solver, at);
+  else fastest.speed = 0.0;
+  return fastest;
 }
 
 double max_speed(const FluidSolver& solver) {

@@ -9,6 +9,7 @@
 #include "cases/serial_flow.h"
 #include "coupling/diagnostics/bonds.h"
 #include "coupling/diagnostics/run_guards.h"
+#include "lbm/stability.h"
 
 using namespace coupling;
 
@@ -57,13 +58,46 @@ TEST(Bonds, AParticleTouchesTheWallFromItsFollowedNearestWallOrBySearch) {
   EXPECT_FALSE(touches_wall(nullptr, surface, {6.0, 4.0, 4.0}, 1.0, scratch));
 }
 
-// A flow beyond the lattice's accuracy is named with its Mach number and step and what lowers
-// it; at or below the bound nothing is said (a NaN, which the fluid guard reports, neither).
+// A flow beyond the lattice's accuracy is named with its Mach number, step and place and what
+// lowers it; at or below the bound nothing is said (a NaN, which the fluid guard reports, neither).
 TEST(RunGuards, FastFlowWarningAboveTheAccurateMachNumber) {
-  EXPECT_EQ(coupling::fast_flow_warning(0.29, 10), "");
-  EXPECT_EQ(coupling::fast_flow_warning(coupling::kAccurateLatticeMach, 10), "");
-  EXPECT_EQ(coupling::fast_flow_warning(std::nan(""), 10), "");
-  const std::string warning = coupling::fast_flow_warning(0.99, 12345);
-  for (const char* words : {"Mach number reached 0.99", "fluid step 12345", "u_lattice", "finer lattice"})
+  FastFlowSite site;
+  site.node = {70, 12, 30};
+  site.speed = 0.57;
+  site.wall_links = 5;
+  site.nearest = {ParticleProbe{93, 0.02}, ParticleProbe{12, 0.61}};
+  EXPECT_EQ(coupling::fast_flow_warning(0.29, 10, site), "");
+  EXPECT_EQ(coupling::fast_flow_warning(coupling::kAccurateLatticeMach, 10, site), "");
+  EXPECT_EQ(coupling::fast_flow_warning(std::nan(""), 10, site), "");
+  const std::string warning = coupling::fast_flow_warning(0.99, 12345, site);
+  for (const char* words : {"Mach number reached 0.99", "fluid step 12345", "node (70,12,30), speed 0.57",
+                            "0.02 cells from particle 93, 0.61 cells from particle 12",
+                            "5 of its links on the wall", "u_lattice", "finer lattice"})
     EXPECT_NE(warning.find(words), std::string::npos) << words << " in: " << warning;
+}
+
+// The fast node is found over the whole lattice, with the two particle surfaces nearest to it
+// and its links on the static wall (the plane z = 0 below it).
+TEST(RunGuards, TheFastestFlowIsLocatedWithItsNearestSurfaces) {
+  lbm::VoxelGeometry g({8, 8, 8});
+  for (int i = 0; i < 8; ++i)
+    for (int j = 0; j < 8; ++j) g.set_solid(i, j, 0, true);
+  lbm::FluidParameters p;
+  p.periodic = {true, true, true};
+  lbm::FluidSolver solver(g, p, lbm::FlowDrive{}, cases::serial_decomposition(g, p.periodic));
+  solver.initialise_equilibrium(1.0, {0.01, 0.0, 0.0});
+  solver.populations().at(1, solver.layout().cell(3, 4, 1)) += 0.3;  // c_1 = (1, 0, 0)
+  ParticleSet particles;
+  particles.add(7, {6.0, 4.0, 1.0}, {0.0, 0.0, 0.0}, 2.0);  // its surface 1.0 from the node
+  particles.add(9, {1.0, 4.0, 1.0}, {0.0, 0.0, 0.0}, 1.5);  // 0.5
+  particles.add(4, {3.0, 4.0, 6.0}, {0.0, 0.0, 0.0}, 1.0);  // 4.0
+  const FastFlowSite site = locate_fastest_flow(solver, particles.view());
+  EXPECT_EQ(site.node, (std::array<int, 3>{3, 4, 1}));
+  EXPECT_DOUBLE_EQ(site.speed, lbm::max_speed(solver));
+  EXPECT_GT(site.speed, 0.2);
+  EXPECT_EQ(site.wall_links, 5);  // the five directions with c_z = -1
+  EXPECT_EQ(site.nearest[0].id, 9);
+  EXPECT_DOUBLE_EQ(site.nearest[0].value, 0.5);
+  EXPECT_EQ(site.nearest[1].id, 7);
+  EXPECT_DOUBLE_EQ(site.nearest[1].value, 1.0);
 }

@@ -21,18 +21,26 @@ ParticleProbe fastest_particle(const ParticleView& view) {
   return fastest;
 }
 
-ParticleProbe nearest_particle_surface(const ParticleView& view, const PeriodicBox& box, const Vec3& point) {
-  ParticleProbe nearest;
-  nearest.value = std::numeric_limits<double>::infinity();
+std::array<ParticleProbe, 2> nearest_particle_surfaces(const ParticleView& view, const PeriodicBox& box,
+                                                       const Vec3& point) {
+  std::array<ParticleProbe, 2> nearest;
+  for (ParticleProbe& probe : nearest) probe.value = std::numeric_limits<double>::infinity();
   for (std::size_t p = 0; p < view.num_total; ++p) {
     const Vec3 d = box.displacement(view.x(p), point);
     const double gap = std::sqrt(dot(d, d)) - view.r(p);
-    if (gap < nearest.value) {
-      nearest.value = gap;
-      nearest.id = view.identifier(p);
+    const ParticleProbe probe{view.identifier(p), gap};
+    if (gap < nearest[0].value) {
+      nearest[1] = nearest[0];
+      nearest[0] = probe;
+    } else if (gap < nearest[1].value) {
+      nearest[1] = probe;
     }
   }
   return nearest;
+}
+
+ParticleProbe nearest_particle_surface(const ParticleView& view, const PeriodicBox& box, const Vec3& point) {
+  return nearest_particle_surfaces(view, box, point)[0];
 }
 
 std::string instability_cause(const ParticleProbe& nearest) {

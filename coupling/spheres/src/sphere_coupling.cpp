@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "coupling/force/open_face_pressure.h"
 #include "coupling/stage_clock.h"
 #include "lbm/input_error.h"
 
@@ -106,6 +107,9 @@ void SphereCoupling::apply_moving_walls_and_force(const ParticleView& view) {
   loads_.reset(view.num_total);
   add_momentum_exchange(links_, link_populations_, options_.momentum_exchange, rho0, loads_,
                         options_.reference_pressure);
+  // The fluid beyond the open faces on the spheres that reach them (the same gauge).
+  add_open_face_pressure(view, solver_, options_.reference_pressure == ReferencePressure::kRemoved ? rho0 : 0.0,
+                         loads_);
 }
 
 void SphereCoupling::step(const ParticleView& view) {

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "lbm/block_layout.h"
@@ -10,6 +11,7 @@
 #include "lbm/decomposition.h"
 #include "lbm/halo_populations.h"
 #include "lbm/node_type.h"
+#include "lbm/open_boundary.h"
 #include "lbm/population_field.h"
 #include "lbm/trt.h"
 #include "lbm/voxel_geometry.h"
@@ -97,6 +99,11 @@ class FluidSolver {
   bool is_exchanged_ghost(std::size_t cell) const;
   void apply_wall_bounce_back();
   void apply_open_boundaries();
+  // The inlet (side 0) or outlet (side 1) face of the drive, where this rank holds it.
+  std::optional<OpenFace> open_face(int side) const;
+  // The density the open boundary gives the face's fluid node `cell` this step
+  // (lbm::open_face_node_density); rho0 where `cell` is no fluid node of an open face here.
+  double open_face_density(std::size_t cell) const;
   void collide_stream();
 
   // Reset every fluid node to equilibrium at density rho and velocity u.

@@ -29,6 +29,13 @@ struct OpenFace {
 void apply_open_face(const OpenFace& face, const BlockLayout& layout,
                      const std::vector<std::uint8_t>& node_type, PopulationField& f);
 
+// The density apply_open_face gives the face's fluid node `cell` from its populations as they
+// stand: the imposed value on a density face; on a velocity face the one its known
+// populations and the velocity fix. The pressure of the fluid just beyond the face, which
+// the lattice does not hold (the momentum exchange's open-face links).
+double open_face_node_density(const OpenFace& face, const BlockLayout& layout, const PopulationField& f,
+                              std::size_t cell);
+
 // Mass the next streaming moves into the block through one open face: what the owned fluid
 // nodes on it pull from the ghosts beyond it (the values apply_open_face wrote) less what
 // they send there (their post-collision populations pointing out of the lattice, which no

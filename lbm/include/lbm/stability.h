@@ -48,6 +48,7 @@ struct FluidStateProblem {
   std::array<int, 3> node{0, 0, 0};  // global lattice indices
   double density = 0.0;
   double speed = 0.0;
+  int wall_links = 0;  // directions of the node's 18 that end on a static wall (kSolid) node
   std::string describe() const;  // "node (i,j,k): density ..., speed ... (lattice units)"
 };
 
@@ -55,6 +56,10 @@ struct FluidStateProblem {
 // speed above max_speed (lattice units; the scheme is only accurate well below the lattice
 // speed of sound 0.577, and unstable near it). Local to the rank: the host reduces.
 FluidStateProblem check_fluid_state(const FluidSolver& solver, double max_speed);
+
+// This rank's fastest owned fluid node (`found` false when it owns none): where the largest
+// lattice Mach number of a thermo row is, for the fast-flow warning. Local to the rank.
+FluidStateProblem fastest_node(const FluidSolver& solver);
 
 // Largest speed over the owned fluid nodes of all ranks (the lattice Mach number times c_s).
 double max_speed(const FluidSolver& solver);

@@ -3,6 +3,7 @@
 // at most one node layer per fluid step, so a particle may move at most half a cell per
 // step) and the one nearest to a node where the fluid became unstable (most blow-ups start
 // in a gap next to a particle). Local to a rank: the host reduces.
+#include <array>
 #include <limits>
 #include <string>
 
@@ -25,6 +26,11 @@ ParticleProbe fastest_particle(const ParticleView& view);
 
 // The particle (owned or ghost) whose surface is nearest to `point` (lattice units).
 ParticleProbe nearest_particle_surface(const ParticleView& view, const PeriodicBox& box, const Vec3& point);
+
+// The two particles whose surfaces are nearest to `point`, nearest first (id -1 where the view
+// holds fewer): a node in the gap between two of them has both within a cell.
+std::array<ParticleProbe, 2> nearest_particle_surfaces(const ParticleView& view, const PeriodicBox& box,
+                                                       const Vec3& point);
 
 // The end of the message when the fluid became unstable at a node: which particle is
 // nearest ("; nearest particle 12, its surface 0.40 cells away") and the likely cause. A gap

@@ -4,8 +4,10 @@
 // away. A verdict is the same on every rank (stop or go on); the rank that found the problem
 // also holds the message, so the host can let that rank write it before every rank stops
 // (one message, from where the problem is, instead of a hang or one message per rank).
+#include <array>
 #include <string>
 
+#include "coupling/diagnostics/particle_probes.h"
 #include "coupling/particle_view.h"
 #include "lbm/communicator.h"
 #include "lbm/fluid_solver.h"
@@ -38,9 +40,21 @@ GuardVerdict fluid_state_guard(const lbm::FluidSolver& solver, const ParticleVie
 // clogged pore reach it between the fluid guard's checks (doc/calibration.md).
 constexpr double kAccurateLatticeMach = 0.3;
 
+// Where the fastest flow of all ranks is: its node (global lattice indices), speed, how many
+// of its 18 directions end on the static wall, and the two particle surfaces nearest to it
+// (cells; id -1 where there are fewer). Alike on every rank (collective).
+struct FastFlowSite {
+  std::array<int, 3> node{0, 0, 0};
+  double speed = 0.0;
+  int wall_links = 0;
+  std::array<ParticleProbe, 2> nearest;
+};
+FastFlowSite locate_fastest_flow(const lbm::FluidSolver& solver, const ParticleView& view);
+
 // A warning, or "" at or below kAccurateLatticeMach: the largest lattice Mach number seen
-// (f_pore[10]) and the fluid step, what it means and what lowers it. The host says it once,
-// the first time.
-std::string fast_flow_warning(double lattice_mach, long long fluid_step);
+// (f_pore[10]), the fluid step and where (`site`: a node in a gap narrower than a cell has a
+// surface on either side within a cell), what it means and what lowers it. The host says it
+// once, the first time.
+std::string fast_flow_warning(double lattice_mach, long long fluid_step, const FastFlowSite& site);
 
 }  // namespace coupling
