@@ -12,6 +12,7 @@
 #include "lbm/macroscopic.h"
 #include "lbm/moving_wall/moment_cache.h"
 #include "lbm/open_boundary.h"
+#include "plane_nodes.h"
 
 namespace lbm {
 
@@ -123,6 +124,7 @@ double FluidSolver::equilibrium_at(int q, double rho, const std::array<double, 3
 }
 
 void FluidSolver::initialise_equilibrium(double rho, const std::array<double, 3>& u) {
+  face_density_time_[0] = face_density_time_[1] = kNever;
   const std::size_t n = layout_.num_cells();
   for (std::size_t cell = 0; cell < n; ++cell) {
     const bool fluid = node_type_[cell] == kFluid;
@@ -133,6 +135,7 @@ void FluidSolver::initialise_equilibrium(double rho, const std::array<double, 3>
 
 void FluidSolver::initialise_equilibrium(
     const std::function<std::array<double, 4>(int, int, int)>& state) {
+  face_density_time_[0] = face_density_time_[1] = kNever;
   for (int k = -1; k <= layout_.size(2); ++k)
     for (int j = -1; j <= layout_.size(1); ++j)
       for (int i = -1; i <= layout_.size(0); ++i) {
@@ -262,11 +265,33 @@ std::optional<OpenFace> FluidSolver::open_face(int side) const {
 void FluidSolver::apply_open_boundaries() {
   for (int side = 0; side < 2; ++side) {
     open_face_mass_[side] = 0.0;
-    if (const std::optional<OpenFace> face = open_face(side)) {
-      apply_open_face(*face, layout_, node_type_, f_);
-      open_face_mass_[side] = lbm::open_face_mass(*face, layout_, node_type_, f_);
-    }
+    face_density_time_[side] = kNever;
+    const std::optional<OpenFace> face = open_face(side);
+    if (!face) continue;
+    const int a = face->axis;
+    std::vector<double>& density = face_density_[side];
+    density.resize(std::size_t(layout_.size((a + 1) % 3)) * std::size_t(layout_.size((a + 2) % 3)));
+    apply_open_face(*face, layout_, node_type_, f_, density.data());
+    open_face_mass_[side] = lbm::open_face_mass(*face, layout_, node_type_, f_);
+    // Summed on one thread in the plane's order, as lbm::pressure_loss sums a plane it reads.
+    double* const sums = face_density_sums_[side];
+    sums[0] = sums[1] = 0.0;
+    detail::for_plane_fluid_nodes(layout_, node_type_, a, face->local_plane,
+                                  [&](std::size_t, std::size_t slot) {
+                                    sums[0] += density[slot];
+                                    sums[1] += 1.0;
+                                  },
+                                  [](std::size_t) {});
+    face_density_time_[side] = time_step_;
   }
+}
+
+bool FluidSolver::add_open_face_densities(int face, double* sums) const {
+  // Set before this step's collide_stream, which advanced the time step by one.
+  if (face_density_time_[face] == kNever || face_density_time_[face] + 1 != time_step_) return false;
+  sums[0] += face_density_sums_[face][0];
+  sums[1] += face_density_sums_[face][1];
+  return true;
 }
 
 double FluidSolver::open_face_density(std::size_t cell) const {

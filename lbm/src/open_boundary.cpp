@@ -85,7 +85,7 @@ ImposedState imposed_state(const OpenFace& face, const KnownSums& k) {
 // loops over q with those tests at run time; every product with a c_q component is exact).
 template <int kAxis, int kInward>
 void apply_face(const OpenFace& face, const BlockLayout& layout,
-                const std::vector<std::uint8_t>& node_type, PopulationField& f) {
+                const std::vector<std::uint8_t>& node_type, PopulationField& f, double* density) {
   using L = D3Q19;
   constexpr int a = kAxis;
   constexpr int t1 = (a + 1) % 3, t2 = (a + 2) % 3;  // tangential axes
@@ -101,13 +101,14 @@ void apply_face(const OpenFace& face, const BlockLayout& layout,
   // an x-normal face each is a line of its own, just streamed to memory by the kernel.
   const auto prefetch = [&](std::size_t ahead) { detail::prefetch_pulled(f, ahead, off); };
   // A node reads and writes only the slots it pulls: the nodes may go to any thread.
-  for_face_nodes_in_parallel(face, layout, node_type, [&](std::size_t cell) {
+  for_face_nodes_in_parallel(face, layout, node_type, [&](std::size_t cell, std::size_t slot) {
     // Populations after streaming: f_q(x) = f*_q(x - c_q).
     double post[L::Q];
 #pragma GCC unroll 19
     for (int q = 0; q < L::Q; ++q) post[q] = pulled[q][cell];
     const KnownSums k = known_sums<kAxis, kInward>(post);
     const ImposedState state = imposed_state<kInward>(face, k);
+    if (density) density[slot] = state.rho;
     double u[3] = {0.0, 0.0, 0.0};
     u[a] = state.u_n * kInward;
     // Transverse momentum correction N_t = 1/2 sum_{c.n=0} f c_t - rho u_t / 3 (u_t = 0).
@@ -177,9 +178,9 @@ auto by_face(const OpenFace& face, Call call) {
 }  // namespace
 
 void apply_open_face(const OpenFace& face, const BlockLayout& layout,
-                     const std::vector<std::uint8_t>& node_type, PopulationField& f) {
+                     const std::vector<std::uint8_t>& node_type, PopulationField& f, double* density) {
   by_face(face, [&](auto axis, auto inward) {
-    apply_face<decltype(axis)::value, decltype(inward)::value>(face, layout, node_type, f);
+    apply_face<decltype(axis)::value, decltype(inward)::value>(face, layout, node_type, f, density);
   });
 }
 

@@ -124,7 +124,10 @@ class FluidSolver {
   std::vector<std::uint8_t>& node_types() { return node_type_; }
   const std::vector<std::uint8_t>& node_types() const { return node_type_; }
   long long time_step() const { return time_step_; }
-  void set_time_step(long long t) { time_step_ = t; }
+  void set_time_step(long long t) {
+    time_step_ = t;
+    face_density_time_[0] = face_density_time_[1] = kNever;
+  }
   // Changes the drive between steps (e.g. a pressure ramp).
   void set_drive(const FlowDrive& drive);
 
@@ -148,8 +151,22 @@ class FluidSolver {
   // 0 where the rank has no such face or the drive is none. Negative = outflow.
   double open_face_mass(int face) const { return open_face_mass_[face]; }
 
+  // The sum of the densities of the inlet (face 0) or outlet (face 1) face's fluid nodes and
+  // their count, added to sums[0] and sums[1] in plane order (lbm::pressure_loss's sums), as
+  // the open boundary imposed them in the last step: the collision conserves mass, so they
+  // are the nodes' densities after it to round-off. False, adding nothing, where this rank
+  // has no such face or the populations changed otherwise since (a checkpoint read, an
+  // initialisation): then the plane must be read.
+  bool add_open_face_densities(int face, double* sums) const;
+
  private:
+  static constexpr long long kNever = -2;
   double open_face_mass_[2] = {0.0, 0.0};
+  // Each face node's imposed density by its slot in the plane, their sum and count, and the
+  // time step at which the open boundary set them (kNever: not since the last reset).
+  std::vector<double> face_density_[2];
+  double face_density_sums_[2][2] = {{0.0, 0.0}, {0.0, 0.0}};
+  long long face_density_time_[2] = {kNever, kNever};
   // The equilibrium of the chosen model (FluidParameters::incompressible).
   double equilibrium_at(int q, double rho, const std::array<double, 3>& u) const;
   void build_node_types();

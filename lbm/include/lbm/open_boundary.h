@@ -25,9 +25,13 @@ struct OpenFace {
 };
 
 // Applies one face to the owned fluid nodes of the block lying on it. The tangential
-// velocity is set to zero.
+// velocity is set to zero. With `density` (a buffer of the plane's size) each fluid node's
+// imposed density goes to its slot in the plane (row * row length + place in the row, the
+// first tangential axis innermost): the node's density after the step's collision too,
+// which conserves mass, so the face's mean pressure needs no second pass over its nodes.
 void apply_open_face(const OpenFace& face, const BlockLayout& layout,
-                     const std::vector<std::uint8_t>& node_type, PopulationField& f);
+                     const std::vector<std::uint8_t>& node_type, PopulationField& f,
+                     double* density = nullptr);
 
 // The density apply_open_face gives the face's fluid node `cell` from its populations as they
 // stand: the imposed value on a density face; on a velocity face the one its known
