@@ -26,13 +26,13 @@ void for_face_nodes_in_parallel(const OpenFace& face, const BlockLayout& layout,
 // What a face node knows after streaming, from its populations post[q] = f*_q(x - c_q): the
 // sums over the directions along the face (T, with their transverse momenta) and those
 // pointing out of the lattice (O). The q loop unrolls and every test of c_q along the normal
-// folds away.
+// folds away. Inlined into the face's node loop (a call per node there costs more than the sums).
 struct KnownSums {
   double tangential = 0.0, outgoing = 0.0;
   double transverse[3] = {0.0, 0.0, 0.0};
 };
 template <int kAxis, int kInward>
-KnownSums known_sums(const double* post) {
+[[gnu::always_inline]] inline KnownSums known_sums(const double* post) {
   using L = D3Q19;
   constexpr int t1 = (kAxis + 1) % 3, t2 = (kAxis + 2) % 3;  // tangential axes
   KnownSums k;
@@ -56,7 +56,7 @@ struct ImposedState {
   double rho, u_n, m;
 };
 template <int kInward>
-ImposedState imposed_state(const OpenFace& face, const KnownSums& k) {
+[[gnu::always_inline]] inline ImposedState imposed_state(const OpenFace& face, const KnownSums& k) {
   // u_n is the velocity along the inward normal; rho = T + O + I and m u_n = I - O with
   // m = rho (standard) or rho0 (incompressible), so rho - m u_n = T + 2 O.
   double rho, u_n, m;
