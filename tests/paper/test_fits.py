@@ -146,6 +146,25 @@ class FiguresCompareLikeWithLike(unittest.TestCase):
         self.assertTrue(os.path.getsize(r["plot"]) > 5000)
 
 
+class BurstDeposit(unittest.TestCase):
+    """A burst's deposit is counted over the fluid steps before its peak: at the peak itself
+    the deposit has begun to slide and its particles drop out of the count one by one."""
+
+    def test_the_deposit_before_the_peak_not_at_it(self):
+        from figures import calibration
+        # A deposit of 29 built by step 9000, flickering to 27 now and then, sliding from step
+        # 9800 on (counted 12, then 2 at the peak, 10 000).
+        steps = list(range(0, 10001, 100))
+        counts = [min(29, s // 300) for s in steps]
+        counts = [27 if (s % 700 == 0 and c == 29) else c for s, c in zip(steps, counts)]
+        counts[-3:] = [12, 5, 2]
+        columns = {"Step": steps, "pore[7]": counts}
+        self.assertEqual(calibration.deposit_before(columns, 10000, 1000), 29)
+        self.assertEqual(counts[-1], 2)  # what the record's count at the peak says
+        self.assertEqual(calibration.deposit_before(columns, 3000, 600), 9)  # median of 8, 9, 9, ...
+        self.assertIsNone(calibration.deposit_before(columns, 50, 0))
+
+
 class StudyScene(unittest.TestCase):
     """A study resumed after in.pore gained a knob keeps its old copy of in.pore, which would
     take the knob and ignore it: run_study refuses such a run (ensemble.unknown_knobs)."""
