@@ -12,10 +12,14 @@ import sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "pore"))
 from plot_pressure import read_thermo  # noqa: E402  (the main example's log reader)
 
-# A burst file's columns (fix lbm/pore's burst_file); rows of files written before the last
-# three existed have the first ten.
+# A burst file's columns (fix lbm/pore's burst_file). V_dep, L_dep and count_before are taken
+# at the peak; deposit_count, deposit_V and deposit_L are the deposit the burst tore off, the
+# medians over the burst window up to the peak (at the peak a sliding deposit has dropped out
+# of the count). Rows of files written before the last three existed have the first thirteen,
+# before wall_F, on_wall and P_pi_D2_4 the first ten.
 BURST_COLUMNS = ("step", "time", "P_peak", "P_after", "delta_P", "delta_t", "V_dep", "L_dep",
-                 "count_before", "count_after", "wall_F", "on_wall", "P_pi_D2_4")
+                 "count_before", "count_after", "wall_F", "on_wall", "P_pi_D2_4",
+                 "deposit_count", "deposit_V", "deposit_L")
 
 
 def lattice_timing(run_dir):
@@ -55,7 +59,9 @@ def thermo(run_dir):
 def bursts(run_dir):
     """The run's erosive bursts, one dict per row of bursts.txt (pressures in P_out). A run
     resumed from a restart file records again the bursts it had recorded after that file was
-    written: a row with the step of an earlier one replaces it."""
+    written: a row with the step of an earlier one replaces it. A row written before the
+    records carried the deposit before the peak takes the peak's own (deposit_count,
+    deposit_V, deposit_L from count_before, V_dep, L_dep) and has deposit_recorded False."""
     path = os.path.join(run_dir, "bursts.txt")
     rows = {}
     if os.path.exists(path):
@@ -63,6 +69,10 @@ def bursts(run_dir):
             for line in f:
                 if line.strip() and not line.startswith("#"):
                     row = dict(zip(BURST_COLUMNS, map(float, line.split())))
+                    row["deposit_recorded"] = "deposit_count" in row
+                    for deposit, at_peak in (("deposit_count", "count_before"), ("deposit_V", "V_dep"),
+                                             ("deposit_L", "L_dep")):
+                        row.setdefault(deposit, row[at_peak])
                     rows[row["step"]] = row
     return sorted(rows.values(), key=lambda r: r["step"])
 

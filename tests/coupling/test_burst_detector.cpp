@@ -199,8 +199,86 @@ TEST(BurstDetector, StateSaveAndRestoreGivesTheSameRecords) {
   EXPECT_THROW(other.restore({2.0, 1.0}), std::invalid_argument);
 }
 
+namespace {
+// Today's state (version 3) as version 2 wrote it: without the deposit before the peak and
+// the recent deposits it is taken from; records of 13 columns.
+std::vector<double> as_version_2(const std::vector<double>& today) {
+  constexpr std::size_t kSample = 10, kDeposit = 4, kOldColumns = 13;
+  const auto candidates = static_cast<std::size_t>(today[3]), bursts = static_cast<std::size_t>(today[4]);
+  std::vector<double> old{2.0, today[1], today[2], today[3], today[4]};
+  const double* in = today.data() + 6;
+  old.insert(old.end(), in, in + 3 * kSample);
+  in += 3 * kSample + kDeposit;
+  old.insert(old.end(), in, in + candidates * (kSample + 1));
+  in += candidates * (kSample + 1);
+  for (std::size_t i = 0; i < bursts; ++i, in += BurstRecord::kColumns) old.insert(old.end(), in, in + kOldColumns);
+  return old;
+}
+
+// A signal whose deposit of 29 particles slides in the last 50 fluid steps before the peak
+// at 3000 (counted 2 there), then a new rise from 5000.
+Signal sliding_deposit() {
+  Signal signal;
+  signal.pressure = [](long long t) { return ramp_and_drop(t, 3000, 0.4, 200) + (t > 5000 ? 0.05 : 0.0); };
+  signal.count = [](long long t) { return t < 2000 ? t / 100 : t < 2950 ? 29LL : t <= 3000 ? 2LL : 1LL; };
+  return signal;
+}
+}  // namespace
+
+// The deposit a burst tore off is the median over the window up to its peak, not the count
+// at the peak, where a sliding deposit has dropped out of the count.
+TEST(BurstDetector, TheDepositIsTakenOverTheWindowBeforeThePeak) {
+  const auto sliding = detect(sliding_deposit(), 4500);
+  ASSERT_EQ(sliding.size(), 1u);
+  EXPECT_EQ(sliding[0].count_before, 2);
+  EXPECT_EQ(sliding[0].deposit_count, 29);  // 950 of the window's 1001 samples hold 29
+  EXPECT_DOUBLE_EQ(sliding[0].deposit_volume, 29000.0);
+  EXPECT_DOUBLE_EQ(sliding[0].deposit_length, 58.0);
+  EXPECT_DOUBLE_EQ(sliding[0].deposited_volume, 2000.0);  // at the peak, as before
+  // A deposit growing through the window: the median is the count half a window before.
+  Signal growing;
+  growing.pressure = [](long long t) { return ramp_and_drop(t, 3000, 0.4, 200); };
+  growing.count = [](long long t) { return t / 100; };
+  const auto grown = detect(growing, 4500);
+  ASSERT_EQ(grown.size(), 1u);
+  EXPECT_EQ(grown[0].count_before, 30);
+  EXPECT_EQ(grown[0].deposit_count, 25);
+  EXPECT_DOUBLE_EQ(grown[0].deposit_length, 50.0);
+  const auto row = grown[0].row();
+  ASSERT_EQ(row.size(), std::size_t(BurstRecord::kColumns));
+  EXPECT_EQ(row[13], 25.0);
+  EXPECT_EQ(row[15], 50.0);
+}
+
+// A state written before the deposit before the peak was kept (version 2) restores with each
+// record's and the followed burst's deposit taken at its own peak, and runs on.
+TEST(BurstDetector, VersionTwoStateRestoresWithTheDepositAtThePeak) {
+  const Signal signal = sliding_deposit();
+  BurstDetector today;
+  detect(signal, 3100, today);  // the fall found, being followed
+  ASSERT_TRUE(today.bursts().empty());
+  BurstDetector resumed;
+  resumed.restore(as_version_2(today.state()));
+  const auto bursts = detect(signal, 4500, resumed, 3100);
+  ASSERT_EQ(bursts.size(), 1u);
+  EXPECT_EQ(bursts[0].deposit_count, 2);  // the peak's own count: the window was not kept
+  EXPECT_DOUBLE_EQ(bursts[0].deposit_volume, 2000.0);
+  EXPECT_EQ(bursts[0].peak_pressure, detect(signal, 4500)[0].peak_pressure);
+  // A recorded burst keeps its columns and takes its peak's deposit.
+  BurstDetector later;
+  detect(signal, 5100, later);
+  BurstDetector upgraded;
+  upgraded.restore(as_version_2(later.state()));
+  ASSERT_EQ(upgraded.bursts().size(), 1u);
+  EXPECT_EQ(upgraded.bursts()[0].deposit_count, upgraded.bursts()[0].count_before);
+  EXPECT_EQ(upgraded.bursts()[0].wall_force, later.bursts()[0].wall_force);
+  std::vector<double> short_state = as_version_2(later.state());
+  short_state.pop_back();
+  EXPECT_THROW(BurstDetector().restore(short_state), std::invalid_argument);
+}
+
 // A state written before the burst records carried the wall's hold (version 1: samples of
-// 7 values, records of 10) restores as today's with the hold 0.
+// 7 values, records of 10) restores as version 2 would, with the hold 0.
 TEST(BurstDetector, VersionOneStateRestoresWithoutTheHold) {
   Signal signal;
   signal.pressure = [](long long t) { return ramp_and_drop(t, 3000, 0.4, 200) + (t > 5000 ? 0.05 : 0.0); };
@@ -208,12 +286,12 @@ TEST(BurstDetector, VersionOneStateRestoresWithoutTheHold) {
   BurstDetector today;
   detect(signal, 5100, today);  // one burst recorded, candidates of the new rise in the window
   ASSERT_EQ(today.bursts().size(), 1u);
-  std::vector<double> current = today.state();
-  // The same state as version 1 wrote it, and today's with the hold zeroed.
-  constexpr std::size_t kSample = 10, kOldSample = 7, kColumns = BurstRecord::kColumns, kOldColumns = 10;
-  const auto candidates = static_cast<std::size_t>(current[3]), bursts = static_cast<std::size_t>(current[4]);
-  std::vector<double> old{1.0, current[1], current[2], current[3], current[4]}, expected(current.begin(), current.begin() + 5);
-  const double* in = current.data() + 5;
+  const std::vector<double> two = as_version_2(today.state());
+  // The same state as version 1 wrote it, and version 2's with the hold zeroed.
+  constexpr std::size_t kSample = 10, kOldSample = 7, kColumns = 13, kOldColumns = 10;
+  const auto candidates = static_cast<std::size_t>(two[3]), bursts = static_cast<std::size_t>(two[4]);
+  std::vector<double> old{1.0, two[1], two[2], two[3], two[4]}, expected(two.begin(), two.begin() + 5);
+  const double* in = two.data() + 5;
   auto sample = [&](const double* s, bool flag) {
     old.insert(old.end(), s, s + kOldSample);
     expected.insert(expected.end(), s, s + kOldSample);
@@ -231,11 +309,13 @@ TEST(BurstDetector, VersionOneStateRestoresWithoutTheHold) {
     expected.insert(expected.end(), kColumns - kOldColumns, 0.0);
   }
   ASSERT_GT(candidates, 0u);
-  BurstDetector resumed;
+  BurstDetector resumed, resumed_two;
   resumed.restore(old);
-  EXPECT_EQ(resumed.state(), expected);
+  resumed_two.restore(expected);
+  EXPECT_EQ(resumed.state(), resumed_two.state());
   EXPECT_EQ(resumed.bursts()[0].wall_force, 0.0);
   EXPECT_EQ(resumed.bursts()[0].count_before, 10);
+  EXPECT_EQ(resumed.bursts()[0].deposit_count, 10);
   old.pop_back();
   EXPECT_THROW(BurstDetector().restore(old), std::invalid_argument);
 }
@@ -270,6 +350,9 @@ TEST(BurstFileWriter, HeaderOnceThenOneRowPerBurst) {
   r.wall_force = -3.5;
   r.on_wall = 4;
   r.pressure_force = 6.25;
+  r.deposit_count = 9;
+  r.deposit_volume = 450.0;
+  r.deposit_length = 6.0;
   { BurstFileWriter(path, units, false).write(r); }  // a stale file of an earlier run
   { BurstFileWriter(path, units, false).write(r); }  // a fresh run starts the file anew
   { BurstFileWriter(path, units, true).write(r); }   // a restarted run appends, no second header
@@ -278,8 +361,10 @@ TEST(BurstFileWriter, HeaderOnceThenOneRowPerBurst) {
   text << in.rdbuf();
   EXPECT_EQ(text.str(),
             "# step time[fs] P_peak[Pa] P_after[Pa] delta_P[Pa] delta_t[fs] V_dep[um^3] "
-            "L_dep[um] count_before count_after wall_F[nN] on_wall P_pi_D2_4[nN]\n"
-            "42 1.5 2 1 1 0.25 300 4 7 2 -3.5 4 6.25\n42 1.5 2 1 1 0.25 300 4 7 2 -3.5 4 6.25\n");
+            "L_dep[um] count_before count_after wall_F[nN] on_wall P_pi_D2_4[nN] deposit_count "
+            "deposit_V[um^3] deposit_L[um]\n"
+            "42 1.5 2 1 1 0.25 300 4 7 2 -3.5 4 6.25 9 450 6\n"
+            "42 1.5 2 1 1 0.25 300 4 7 2 -3.5 4 6.25 9 450 6\n");
   EXPECT_THROW(BurstFileWriter("/nonexistent/dir/bursts.txt", units, false), std::runtime_error);
 }
 
@@ -293,7 +378,8 @@ TEST(BurstRecord, AnnouncementGivesThePeakTheFallAndTheDeposits) {
   r.duration = 7.5;
   r.count_before = 12;
   r.count_after = 9;
+  r.deposit_count = 20;
   EXPECT_EQ(r.announcement(),
             "erosive burst: the pressure loss fell from 0.5 to 0.375 P_out (25 %) within 7.5 time units "
-            "after step 123400; 12 deposited particles before, 9 after\n");
+            "after step 123400; it tore off a deposit of 20 particles (12 counted at the peak, 9 after)\n");
 }

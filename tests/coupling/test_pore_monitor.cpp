@@ -127,3 +127,29 @@ TEST(PoreMonitor, ClosedBoxGivesAFinitePoreDiameterAndDepositLength) {
   EXPECT_EQ(monitor.values()[PoreMonitor::kDepositedLength], 0.0);
   for (double v : monitor.values()) EXPECT_TRUE(std::isfinite(v));
 }
+
+// A fall counts as an erosive burst when a deposit was there to tear off, at the peak or over
+// the window before it: a deposit that slid before the peak (counted 0 there) is one, a fall
+// with no deposit at all is not (restored from a detector's state, as after a restart).
+TEST(PoreMonitor, ABurstWhoseDepositSlidBeforeThePeakIsErosive) {
+  const auto monitor_with = [](long long deposit) {
+    BurstDetector detector;
+    for (long long t = 0; t < 4500; ++t) {
+      PressureSample s;
+      s.fluid_step = t;
+      s.pressure_loss = t <= 3000 ? 0.01 + 1e-5 * t : 0.02;  // a fall of half the peak after 3000
+      s.deposited_count = t < 2950 ? deposit : 0;
+      detector.add(s);
+    }
+    EXPECT_EQ(detector.bursts().size(), 1u);
+    PoreMonitor monitor(pore_scene_monitor(lbm::PoreSceneSpec{4, 4, 6, 4, 12, 8.0}), UnitConversion(UnitInputs{}));
+    std::vector<double> state(1 + PoreMonitor::kCount + 1, 0.0);
+    state[0] = PoreMonitor::kCount;
+    const auto detector_state = detector.state();
+    state.insert(state.end(), detector_state.begin(), detector_state.end());
+    monitor.restore(state);
+    return monitor.bursts().size();
+  };
+  EXPECT_EQ(monitor_with(12), 1u);
+  EXPECT_EQ(monitor_with(0), 0u);
+}

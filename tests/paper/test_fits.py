@@ -31,9 +31,11 @@ HEADER = ("Step Atoms pore[1] pore[6] pore[7] pore[8] pore[4] pore[5] pore[10] b
           "pore[16] pore[17] pore[18]")
 
 
-def write_run(folder, p0, bursts, warmup=2000, D=3.5, Lp=4.25):
+def write_run(folder, p0, bursts, warmup=2000, D=3.5, Lp=4.25, deposits=None):
     """A finished run: a log whose warm-up rows hold P / P_out = p0 (after a start-up
-    overshoot), and a burst file with the given (V_dep, L_dep, P_peak) rows."""
+    overshoot), and a burst file with the given (V_dep, L_dep, P_peak) rows; with `deposits`
+    (count, V, L per burst: the deposit before the peak) in today's columns, else in those
+    written before the records carried it."""
     os.makedirs(folder)
     names = HEADER.split()
     with open(os.path.join(folder, "log.liggghts"), "w") as f:
@@ -46,9 +48,10 @@ def write_run(folder, p0, bursts, warmup=2000, D=3.5, Lp=4.25):
             f.write(" ".join(f"{row[n]:.12g}" for n in names) + "\n")
     with open(os.path.join(folder, "bursts.txt"), "w") as f:
         f.write("# step time P_peak P_after delta_P delta_t V_dep L_dep count_before count_after "
-                "wall_F on_wall P_pi_D2_4\n")
+                "wall_F on_wall P_pi_D2_4" + (" deposit_count deposit_V deposit_L" if deposits else "") + "\n")
         for k, (v, length, p) in enumerate(bursts):
-            f.write(f"{10000 + 100 * k} 0 {p!r} {0.5 * p!r} {0.5 * p!r} 1 {v!r} {length!r} 5 2 -1 3 1\n")
+            extra = " ".join(map(repr, deposits[k])) if deposits else ""
+            f.write(f"{10000 + 100 * k} 0 {p!r} {0.5 * p!r} {0.5 * p!r} 1 {v!r} {length!r} 5 2 -1 3 1 {extra}\n")
     return dict(name=os.path.basename(folder), state="done", folder=folder,
                 knobs=dict(warmup=str(warmup), D=str(D), Lp=str(Lp)))
 
@@ -125,7 +128,7 @@ class FiguresCompareLikeWithLike(unittest.TestCase):
 
     def test_dropvol_units(self):
         D, L = 3.5, 4.25
-        burst = dict(V_dep=2.0 * D ** 3)
+        burst = dict(deposit_V=2.0 * D ** 3)
         run = self.runs[0]
         self.assertAlmostEqual(dropvol.per_cube_of_diameter(run, burst), 2.0, places=12)
         self.assertAlmostEqual(dropvol.per_pore_volume(run, burst), 2.0 * D ** 3 / (math.pi * D * D * L / 4),
@@ -163,6 +166,26 @@ class BurstDeposit(unittest.TestCase):
         self.assertEqual(counts[-1], 2)  # what the record's count at the peak says
         self.assertEqual(calibration.deposit_before(columns, 3000, 600), 9)  # median of 8, 9, 9, ...
         self.assertIsNone(calibration.deposit_before(columns, 50, 0))
+
+    def test_the_record_deposit_is_what_the_analyses_take(self):
+        """A record that carries the deposit before the peak: the calibration counts it and the
+        fits take its L_dep, not the peak's (whose deposit has slid); a record written before
+        falls back to the thermo rows (which hold no deposit here: 0)."""
+        from figures import calibration, porelength
+        with tempfile.TemporaryDirectory() as tmp:
+            c, p0 = 0.95, 0.08
+            lengths = [0.4, 1.2, 2.0]
+            peaks = [(0.01, 0.02, p0 + c * length) for length in lengths]  # slid: tiny at the peak
+            deposits = [(29, length * math.pi * 3.5 ** 2 / 4, length) for length in lengths]
+            today = write_run(os.path.join(tmp, "today"), p0, peaks, deposits=deposits)
+            before = write_run(os.path.join(tmp, "before"), p0, peaks)
+            columns = common.thermo(today["folder"])
+            self.assertEqual([b["deposit"] for b in calibration.bursts_with_deposits(today, columns)], [29] * 3)
+            self.assertEqual([b["deposit"] for b in calibration.bursts_with_deposits(before, columns)], [0] * 3)
+            summary = dict(runs=[today], finished=1, study="porelength", size="tiny", core_hours=0.0)
+            out = os.path.join(tmp, "out")
+            os.makedirs(out)
+            self.assertAlmostEqual(porelength.analyze(summary, out)["excess_coefficient"][0], c, places=9)
 
 
 class StudyScene(unittest.TestCase):

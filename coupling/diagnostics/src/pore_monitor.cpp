@@ -147,7 +147,7 @@ std::optional<BurstRecord> PoreMonitor::record_fluid_step(const lbm::FluidSolver
   sample.pressure_force = units_.pressure_to_physical(pressure * outlet_pressure(solver)) * M_PI * D * D / 4.0;
   auto burst = detector_.add(sample);
   values_[kLargestPressureLoss] = detector_.largest_pressure_loss();
-  if (burst && burst->count_before < setup_.burst_min_deposited) burst.reset();
+  if (burst && !eroded_a_deposit(*burst)) burst.reset();
   if (burst) bursts_.push_back(*burst);
   values_[kBurstCount] = double(bursts_.size());
   if (burst && burst_file_) burst_file_->write(*burst);
@@ -191,7 +191,14 @@ void PoreMonitor::restore(const std::vector<double>& state) {
 void PoreMonitor::keep_erosive_bursts() {
   bursts_.clear();
   for (const BurstRecord& burst : detector_.bursts())
-    if (burst.count_before >= setup_.burst_min_deposited) bursts_.push_back(burst);
+    if (eroded_a_deposit(burst)) bursts_.push_back(burst);
+}
+
+// A fall is an erosive burst when a deposit was there to tear off: at the peak, or over the
+// window before it (a deposit that has begun to slide at the peak drops out of the count
+// there; BurstRecord::deposit_count).
+bool PoreMonitor::eroded_a_deposit(const BurstRecord& burst) const {
+  return std::max(burst.count_before, burst.deposit_count) >= setup_.burst_min_deposited;
 }
 
 }  // namespace coupling

@@ -6,8 +6,9 @@ the fluid steps made and how the run ended; the largest deposited count and V_de
 P_0 (the clean pore, figures.common.clean_pressure) and P_max [P_out]; the bursts with the
 deposits at their peaks; at each peak the wall's hold along the flow against P pi D^2 / 4
 (burst records); the largest lattice Mach number. A burst's deposit is the median deposited
-count over the BEFORE_PEAK fluid steps up to its peak (deposit_before), not the record's count
-at the peak. The study's default velocity is the largest whose bursts carry at least 15
+count over the burst window up to its peak: the record's deposit_count, or, for records
+written before they carried it, the median over the BEFORE_PEAK fluid steps of thermo rows
+(deposit_before); never the record's count at the peak. The study's default velocity is the largest whose bursts carry at least 15
 deposited particles at 0.3-0.6 P_out (CRITERION_COUNT, CRITERION_P) and whose runs go on to
 their end.
 
@@ -63,6 +64,18 @@ def deposit_before(columns, peak_step, window_steps):
     return int(round(float(np.median(np.asarray(columns["pore[7]"], float)[inside]))))
 
 
+def bursts_with_deposits(run, columns):
+    """The run's bursts, each with "deposit": the deposit it tore off, its record's
+    deposit_count, or for a record written before records carried it, deposit_before over
+    the thermo rows (the record's count at its peak where no row lies in the window)."""
+    n_dem = lattice_timing(run["folder"])["n_dem"]
+    rows = bursts(run["folder"])
+    for b in rows:
+        before = None if b["deposit_recorded"] else deposit_before(columns, b["step"], BEFORE_PEAK * n_dem)
+        b["deposit"] = before if before is not None else int(b["deposit_count"])
+    return rows
+
+
 def run_row(run):
     columns = thermo(run["folder"])
     row = dict(name=run["name"], u=float(run["knobs"]["u_lattice"]), seed=run["knobs"]["seed"],
@@ -74,10 +87,7 @@ def run_row(run):
     n_dem = lattice_timing(run["folder"])["n_dem"]
     warmup = float(run["knobs"]["warmup"])
     after = steps > warmup
-    rows = bursts(run["folder"])
-    for b in rows:
-        before = deposit_before(columns, b["step"], BEFORE_PEAK * n_dem)
-        b["deposit"] = before if before is not None else int(b["count_before"])
+    rows = bursts_with_deposits(run, columns)
     holds = [(-b["wall_F"] / b["P_pi_D2_4"]) for b in rows if b.get("P_pi_D2_4")]
     row.update(fluid_steps=int(steps[-1] // n_dem), count=int(np.max(columns["pore[7]"])),
                V_dep=float(np.max(columns["pore[6]"])), P0=clean_pressure(run),
@@ -159,23 +169,24 @@ def twin_statistics(run, times, rng, until):
     """What the N_DEM and resolution comparisons compare, per run (its run_times `times`),
     from the end of its warm-up to `until` time units after it: the mean deposited count and
     the mean P / P_out over time (block-bootstrap intervals), the bursts per 10^4 time units
-    (the paper's fluid steps) and the mean deposited count and P at the peaks."""
+    (the paper's fluid steps) and the mean deposit torn off (bursts_with_deposits) and P at the
+    peaks."""
     t, warmup, columns = times
     warm = (t > warmup) & (t <= warmup + until)
     if warm.sum() < 2:
         return None
     dt = lattice_timing(run["folder"])["dt_dem"]
-    rows = [b for b in bursts(run["folder"]) if warmup < b["step"] * dt <= warmup + until]
+    rows = [b for b in bursts_with_deposits(run, columns) if warmup < b["step"] * dt <= warmup + until]
     span = t[warm][-1] - t[warm][0]
     return dict(time=span, count=block_mean(t[warm], np.asarray(columns["pore[7]"], float)[warm], rng),
                 P=block_mean(t[warm], np.asarray(columns["pore[16]"], float)[warm], rng),
                 burst_rate=1e4 * len(rows) / span if span > 0 else np.nan,
-                peak_count=float(np.mean([b["count_before"] for b in rows])) if rows else np.nan,
+                peak_count=float(np.mean([b["deposit"] for b in rows])) if rows else np.nan,
                 peak_P=float(np.mean([b["P_peak"] for b in rows])) if rows else np.nan)
 
 
 TWIN_HEADER = ["| run | variant | time after warm-up | mean deposited | mean P [P_out] | bursts per 10^4 "
-               "| deposited at peaks, mean | P_peak, mean |", "|---|---|---|---|---|---|---|---|"]
+               "| deposit torn off, mean | P_peak, mean |", "|---|---|---|---|---|---|---|---|"]
 
 
 def twin_row(name, label, stats):

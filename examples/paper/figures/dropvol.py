@@ -16,12 +16,12 @@ PAPER_SLOPE, PAPER_PEARSON, PAPER_K = 1.15, 0.71, 0.91
 
 
 def per_cube_of_diameter(run, burst):
-    return burst["V_dep"] / float(run["knobs"]["D"]) ** 3
+    return burst["deposit_V"] / float(run["knobs"]["D"]) ** 3
 
 
 def per_pore_volume(run, burst):
     D, L = float(run["knobs"]["D"]), float(run["knobs"]["Lp"])
-    return burst["V_dep"] / (np.pi * D * D * L / 4.0)
+    return burst["deposit_V"] / (np.pi * D * D * L / 4.0)
 
 
 def analyze(summary, out_dir):

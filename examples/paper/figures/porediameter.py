@@ -24,19 +24,19 @@ def _points(run):
     out = []
     for b in bursts(run["folder"]):
         f_a = np.nan
-        if b["L_dep"] > 0 and "wall_F" in b:  # the burst record's own hold at the peak
-            f_a = -b["wall_F"] / (np.pi * D * b["L_dep"]) / unit
-        elif len(hold) and b["L_dep"] > 0:  # older records: the nearest thermo row
+        if b["deposit_L"] > 0 and "wall_F" in b:  # the burst record's own hold at the peak
+            f_a = -b["wall_F"] / (np.pi * D * b["deposit_L"]) / unit
+        elif len(hold) and b["deposit_L"] > 0:  # older records: the nearest thermo row
             k = int(np.argmin(abs(steps - b["step"])))
-            f_a = -hold[k] / (np.pi * D * b["L_dep"]) / unit
-        out.append((b["L_dep"] / D, b["P_peak"], f_a))
+            f_a = -hold[k] / (np.pi * D * b["deposit_L"]) / unit
+        out.append((b["deposit_L"] / D, b["P_peak"], f_a))
     return out
 
 
 def analyze(summary, out_dir):
     runs = finished_runs(summary)
     points = [_points(run) for run in runs]
-    fits = pressure_fits(summary, lambda run, b: b["L_dep"] / float(run["knobs"]["D"]))
+    fits = pressure_fits(summary, lambda run, b: b["deposit_L"] / float(run["knobs"]["D"]))
     groups = fits["groups"]
     K = fits["through_origin"]
     f_a_groups = [([p[2] for p in ps if np.isfinite(p[2])],) * 2 for ps in points]

@@ -14,7 +14,7 @@ PAPER_COEFFICIENT, PAPER_PEARSON = 0.27, 0.91
 
 
 def analyze(summary, out_dir):
-    fits = pressure_fits(summary, lambda run, b: b["L_dep"])
+    fits = pressure_fits(summary, lambda run, b: b["deposit_L"])
     groups = fits["groups"]
     fig, ax = plt.subplots(figsize=(6, 4.5))
     runs = [run for run in summary["runs"] if run["state"] == "done"]

@@ -16,7 +16,11 @@
 //     noise on the floor of a fall does not prolong it, and a fall in stages is one burst
 //     as long as each stage follows within a window);
 //   - while a burst is followed no other starts, and the next peak must come after its
-//     minimum.
+//     minimum;
+//   - the deposit a burst tears off is the median of the deposited count, V_dep and L_dep
+//     over the `window` fluid steps up to its peak: at the peak itself the deposit has often
+//     begun to slide, and its particles, faster than the count's speed bound, drop out of
+//     the count (a deposit of 29 particles read 2 at its peak in the paper's scene).
 // Why noise does not split one burst into many: a wiggle during the fall is part of the
 // burst being followed; a wiggle after the minimum is no peak while the old peak, higher,
 // lies within its window, and even as a peak it starts a burst only if it is followed by a
@@ -77,14 +81,18 @@ struct BurstRecord {
   double wall_force = 0.0;        // the wall's force on the particles along the flow, at the peak
   long long on_wall = 0;          // deposited particles touching the wall, at the peak
   double pressure_force = 0.0;    // P_peak pi D^2 / 4 in force units: what the holds must carry
+  // The deposit the burst tore off: medians over the window up to the peak (see above).
+  long long deposit_count = 0;
+  double deposit_volume = 0.0;
+  double deposit_length = 0.0;
 
-  static constexpr int kColumns = 13;
+  static constexpr int kColumns = 16;
   // The record as kColumns numbers, in the order above (a row of the fix's array).
   std::vector<double> row() const;
   // One line, ending in a newline, for a host to announce the burst as it is recorded:
   // "erosive burst: the pressure loss fell from <peak> to <after> P_out (<drop> %) within
-  // <duration> time units after step <step>; <before> deposited particles before, <after>
-  // after".
+  // <duration> time units after step <step>; it tore off a deposit of <deposit> particles
+  // (<before> counted at the peak, <after> after)".
   std::string announcement() const;
 };
 
@@ -104,8 +112,8 @@ class BurstDetector {
   double largest_pressure_loss() const { return largest_; }
   const BurstCriteria& criteria() const { return criteria_; }
 
-  // The whole state (recent samples, the burst being followed, the records, the largest
-  // pressure loss) as a flat vector for a restart file, and back; restore() throws
+  // The whole state (recent samples and deposits, the burst being followed, the records, the
+  // largest pressure loss) as a flat vector for a restart file, and back; restore() throws
   // std::invalid_argument on a vector that state() did not write.
   std::vector<double> state() const;
   void restore(const std::vector<double>& state);
@@ -117,13 +125,22 @@ class BurstDetector {
     PressureSample sample;
     bool is_peak = false;  // no sample of the window before it exceeded it
   };
+  // The deposit of one sample, kept for the two windows before the newest sample: a fall
+  // starts at most a window after its peak, and the deposit is taken over the window before.
+  struct Deposit {
+    long long fluid_step = 0;
+    double count = 0.0, volume = 0.0, length = 0.0;
+  };
   BurstRecord record() const;
+  Deposit deposit_up_to(long long fluid_step) const;
 
   BurstCriteria criteria_;
   std::deque<Candidate> candidates_;
   bool falling_ = false;  // a burst's fall was found; following it to its minimum
   PressureSample peak_, minimum_;
   PressureSample floor_;  // where the fall last went on by more than the resolution
+  Deposit peak_deposit_;  // the deposit over the window up to peak_
+  std::deque<Deposit> recent_;
   std::vector<BurstRecord> bursts_;
   double largest_ = 0.0;
 };

@@ -27,7 +27,8 @@ struct PoreMonitorSetup {
   DepositionCriteria criteria;  // speed threshold of a deposit (lattice units)
   BurstCriteria bursts;         // what counts as an erosive burst (window in fluid steps)
   // An erosive burst tears a deposit off: a fall whose peak had fewer deposited particles
-  // than this (the start-up transient of a flow, particles passing) is not recorded.
+  // than this, at the peak and over the window before it (the start-up transient of a
+  // flow, particles passing), is not recorded.
   long long burst_min_deposited = 1;
 };
 
@@ -147,6 +148,7 @@ class PoreMonitor {
   BurstDetector detector_;
   std::vector<BurstRecord> bursts_;  // the detector's falls that eroded a deposit
   void keep_erosive_bursts();
+  bool eroded_a_deposit(const BurstRecord& burst) const;
   double fluid_mass_unit() const;
   void add_plane_masses(const lbm::FluidSolver& solver);
   double coupling_mass_[2] = {0.0, 0.0};  // this rank's, since the last fluid step recorded
