@@ -210,8 +210,9 @@ def calibration(size):
     Beside them (quick and paper), the runs at u_lattice 0.005 again with N_DEM = 20 DEM
     substeps per fluid step instead of 100 (names ending in _n_dem_20): whether the
     statistics depend on N_DEM, which the paper sets for stability and cost only; and at 5
-    cells per d instead of 7.1 (_5_cells_per_d): whether the quick studies' resolution keeps
-    them. And, at 5 cells per d (a third of the cost; the deposits as at 7.1), the model's
+    cells per d instead of 7.1 (_5_cells_per_d, also at u_lattice 0.0025, where the deposits
+    come nearest the paper's): whether the quick studies' resolution keeps them. And, at 5
+    cells per d (a third of the cost; the deposits as at 7.1), the model's
     open points each switched alone (MODEL_TWINS: names ending in _5_cells_per_d_<point>),
     to choose their defaults by measurement."""
     velocities = _counts(size, [0.02, 0.005], [0.02, 0.01, 0.005, 0.0025], [0.02, 0.01, 0.005, 0.0025])
@@ -226,17 +227,24 @@ def calibration(size):
             if size != "tiny":
                 knobs["thermo_every"] = 1000
             runs.append((f"u_{u:g}_seed_{seed}", knobs))
+    def coarse(u, seed):
+        """The same physical run at 5 cells per d (in.pore's acoustic scaling keeps the DEM
+        step counts): the quick studies' resolution."""
+        knobs = dict(next(k for name, k in runs if name == f"u_{u:g}_seed_{seed}"), cells_per_d=5)
+        knobs.update(scene(5))
+        return knobs
+
     for seed in seeds:
         for u in _counts(size, [], [0.005], [0.005]):
             knobs = dict(next(k for name, k in runs if name == f"u_{u:g}_seed_{seed}"))
             runs.append((f"u_{u:g}_seed_{seed}_n_dem_20", with_n_dem(knobs, 20)))
-            # The same physical run at 5 cells per d (in.pore's acoustic scaling keeps the DEM
-            # step counts): the quick studies' resolution.
-            coarse = dict(knobs, cells_per_d=5)
-            coarse.update(scene(5))
-            runs.append((f"u_{u:g}_seed_{seed}_5_cells_per_d", coarse))
+            runs.append((f"u_{u:g}_seed_{seed}_5_cells_per_d", coarse(u, seed)))
             for point, change in MODEL_TWINS:
-                runs.append((f"u_{u:g}_seed_{seed}_5_cells_per_d_{point}", dict(coarse, **change)))
+                runs.append((f"u_{u:g}_seed_{seed}_5_cells_per_d_{point}", dict(coarse(u, seed), **change)))
+    # The resolution again at the velocity whose deposits come nearest the paper's.
+    for seed in seeds:
+        for u in _counts(size, [], [0.0025], [0.0025]):
+            runs.append((f"u_{u:g}_seed_{seed}_5_cells_per_d", coarse(u, seed)))
     return runs
 
 
