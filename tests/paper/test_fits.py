@@ -188,6 +188,30 @@ class BurstDeposit(unittest.TestCase):
             self.assertAlmostEqual(porelength.analyze(summary, out)["excess_coefficient"][0], c, places=9)
 
 
+class BurstLaw(unittest.TestCase):
+    """The calibration's check of the paper's law of the bursts, P = K L_dep / D, on bursts
+    whose peaks lie exactly on P = P_0 + K L_dep / D: K on P - P_0 is K, through the origin on
+    P it is inflated by P_0, and the deposit's L_dep comes from the thermo rows before the peak
+    when the record predates the deposit columns."""
+
+    def test_K_of_exact_bursts_and_the_deposit_length_before_the_peak(self):
+        from figures import calibration
+        K, p0, D = 0.91, 0.02, 3.5
+        rows = [dict(P_peak=p0 + K * length / D, deposit_L=length) for length in (0.5, 1.0, 1.5, 2.2)]
+        law = calibration.burst_law(rows, D, [p0] * len(rows))
+        self.assertEqual(law["bursts"], 4)
+        for value in law["K"]:
+            self.assertAlmostEqual(value, K, places=12)  # exact points: no spread over bursts
+        self.assertGreater(law["K_total"][0], K + 0.01)
+        self.assertAlmostEqual(law["pearson"][0], 1.0, places=12)
+        with tempfile.TemporaryDirectory() as tmp:
+            run = write_run(os.path.join(tmp, "run"), p0, [(0.01, 0.02, 0.3)])  # slid: L_dep 0.02 at the peak
+            columns = {"Step": [9000, 9500, 9800, 9900, 10000], "pore[7]": [20, 21, 21, 21, 2],
+                       "pore[8]": [1.3, 1.4, 1.4, 1.4, 0.1]}
+            row, = calibration.bursts_with_deposits(run, columns)
+            self.assertEqual((row["deposit"], row["deposit_L"]), (21, 1.4))
+
+
 class StudyScene(unittest.TestCase):
     """A study resumed after in.pore gained a knob keeps its old copy of in.pore, which would
     take the knob and ignore it: run_study refuses such a run (ensemble.unknown_knobs)."""

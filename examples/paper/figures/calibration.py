@@ -18,6 +18,7 @@ import re
 
 import numpy as np
 
+from fit_stats import fmt
 from figures.common import bursts, clean_pressure, plt, result, save, thermo
 from study_io import lattice_timing
 
@@ -51,29 +52,56 @@ def inlet_rate_ratio(run, columns):
     return rate / nominal
 
 
+def window_median(columns, column, peak_step, window_steps):
+    """The median of a thermo column over the rows of the `window_steps` DEM steps up to
+    `peak_step`; None without rows in the window."""
+    steps = np.asarray(columns["Step"], float)
+    inside = (steps >= peak_step - window_steps) & (steps <= peak_step)
+    if not inside.any():
+        return None
+    return float(np.median(np.asarray(columns[column], float)[inside]))
+
+
 def deposit_before(columns, peak_step, window_steps):
     """The deposit a burst tears off: the median deposited count (f_pore[7]) over the thermo
     rows of the `window_steps` DEM steps up to its peak. The burst record's own count is taken
     at the peak itself, when the deposit has begun to slide: its particles are then faster than
     the count's speed bound (deposit_speed) and drop out of it, so a whole-pore deposit can read
     as one or two (doc/calibration.md). None without rows in the window."""
-    steps = np.asarray(columns["Step"], float)
-    inside = (steps >= peak_step - window_steps) & (steps <= peak_step)
-    if not inside.any():
-        return None
-    return int(round(float(np.median(np.asarray(columns["pore[7]"], float)[inside]))))
+    count = window_median(columns, "pore[7]", peak_step, window_steps)
+    return None if count is None else int(round(count))
 
 
 def bursts_with_deposits(run, columns):
-    """The run's bursts, each with "deposit": the deposit it tore off, its record's
-    deposit_count, or for a record written before records carried it, deposit_before over
-    the thermo rows (the record's count at its peak where no row lies in the window)."""
+    """The run's bursts, each with "deposit" and "deposit_L": the deposit it tore off (count
+    and L_dep), its record's deposit_count and deposit_L, or for a record written before
+    records carried them, the same medians over the thermo rows (deposit_before; the record's
+    values at its peak where no row lies in the window)."""
     n_dem = lattice_timing(run["folder"])["n_dem"]
     rows = bursts(run["folder"])
     for b in rows:
-        before = None if b["deposit_recorded"] else deposit_before(columns, b["step"], BEFORE_PEAK * n_dem)
-        b["deposit"] = before if before is not None else int(b["deposit_count"])
+        b["deposit"] = int(b["deposit_count"])
+        if b["deposit_recorded"] or "pore[8]" not in columns:
+            continue
+        count = deposit_before(columns, b["step"], BEFORE_PEAK * n_dem)
+        length = window_median(columns, "pore[8]", b["step"], BEFORE_PEAK * n_dem)
+        if count is not None:
+            b["deposit"], b["deposit_L"] = count, length
     return rows
+
+
+def burst_law(rows, D, p0):
+    """The paper's law of the bursts, P = K L_dep / D (its Fig. porediameter: K = 0.91), on a
+    run's (or runs') bursts with the deposits they tore off: K through the origin on P - P_0
+    (the pressure the deposit adds) and on P, and the Pearson coefficient of P with L_dep / D,
+    each (value, low, high) with a 95 % interval over bursts resampled (a run has too few
+    seeds for an interval over runs). rows: bursts_with_deposits rows; p0 per row."""
+    from fit_stats import bootstrap, pearson, slope_through_origin
+    x = [b["deposit_L"] / D for b in rows]
+    points = [([xi], [b["P_peak"]]) for xi, b in zip(x, rows)]
+    excess = [([xi], [b["P_peak"] - p]) for xi, b, p in zip(x, rows, p0) if np.isfinite(p)]
+    return dict(bursts=len(rows), K=bootstrap(excess, slope_through_origin),
+                K_total=bootstrap(points, slope_through_origin), pearson=bootstrap(points, pearson))
 
 
 def run_row(run):
@@ -88,9 +116,12 @@ def run_row(run):
     warmup = float(run["knobs"]["warmup"])
     after = steps > warmup
     rows = bursts_with_deposits(run, columns)
+    p0 = clean_pressure(run)
+    row["burst_rows"] = [dict(b, P0=p0, D=float(run["knobs"]["D"])) for b in rows]
+    law = burst_law(rows, float(run["knobs"]["D"]), [p0] * len(rows))
     holds = [(-b["wall_F"] / b["P_pi_D2_4"]) for b in rows if b.get("P_pi_D2_4")]
     row.update(fluid_steps=int(steps[-1] // n_dem), count=int(np.max(columns["pore[7]"])),
-               V_dep=float(np.max(columns["pore[6]"])), P0=clean_pressure(run),
+               V_dep=float(np.max(columns["pore[6]"])), P0=p0, K=law["K"], pearson=law["pearson"],
                P_max=float(np.max(np.asarray(columns["pore[16]"])[after])) if after.any() else np.nan,
                mach=float(np.max(columns["pore[10]"])), bursts=len(rows),
                inlet=inlet_rate_ratio(run, columns),
@@ -112,19 +143,39 @@ def stop_reason(error):
 def table(rows):
     lines = ["| run | u_lattice | N_DEM | cells per d | ended | fluid steps | largest deposit (count, V_dep [d^3]) | P_0 | P_max "
              "| bursts (P_peak: deposited over the 1000 fluid steps before it, median) | wall hold / (P pi D^2/4) at peaks, median | max Mach "
-             "| inlet rate / c_in u_in W^2 / V_p |",
-             "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+             "| inlet rate / c_in u_in W^2 / V_p | K of P - P_0 = K L_dep / D (paper 0.91) | Pearson (P, L_dep) |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         if "fluid_steps" not in r:
             lines.append(f"| {r['name']} | {r['u']:g} | {r['n_dem']} | {r['cells_per_d']:g} | {r['state']} "
-                         "| - | - | - | - | - | - | - | - |")
+                         "| - | - | - | - | - | - | - | - | - | - |")
             continue
         ended = r["state"] if r["state"] != "failed" else "stopped: " + stop_reason(r["reason"])
         peaks = ", ".join(f"{p:.2f}: {c}" for p, c in r["peaks"][:8]) + (" ..." if len(r["peaks"]) > 8 else "")
         lines.append(f"| {r['name']} | {r['u']:g} | {r['n_dem']} | {r['cells_per_d']:g} | {ended} | {r['fluid_steps']} | {r['count']}, {r['V_dep']:.2f} "
                      f"| {r['P0']:.3f} | {r['P_max']:.3f} | {r['bursts']} ({peaks or 'none'}) "
-                     f"| {r['hold']:.2f} | {r['mach']:.3f} | {r['inlet']:.2f} |")
+                     f"| {r['hold']:.2f} | {r['mach']:.3f} | {r['inlet']:.2f} | {fmt(*r['K'])} "
+                     f"| {fmt(*r['pearson'])} |")
     return "\n".join(lines)
+
+
+def law_table(rows):
+    """The paper's law of the bursts pooled per velocity over the seeds (the runs at the
+    paper's N_DEM and resolution; burst_law), beside the paper's K = 0.91 (0.87-0.95) and
+    the Pearson coefficient of its Fig. dropvol, 0.71."""
+    lines = ["| u_lattice | runs | bursts | K of P - P_0 = K L_dep / D (95 % over bursts) | K of P through 0 "
+             "| Pearson (P, L_dep) |", "|---|---|---|---|---|---|"]
+    base = [r for r in rows if "burst_rows" in r and variant_label(r["name"]) == VARIANTS[0][1]]
+    for u in sorted({r["u"] for r in base}):
+        runs = [r for r in base if r["u"] == u]
+        bursts_of = [b for r in runs for b in r["burst_rows"]]
+        if not bursts_of:
+            continue
+        # burst_law takes one D; the runs of one velocity share the scene, and each row its own P_0.
+        law = burst_law(bursts_of, bursts_of[0]["D"], [b["P0"] for b in bursts_of])
+        lines.append(f"| {u:g} | {len(runs)} | {law['bursts']} | {fmt(*law['K'])} | {fmt(*law['K_total'])} "
+                     f"| {fmt(*law['pearson'])} |")
+    return "\n".join(lines) if len(lines) > 2 else ""
 
 
 VARIANTS = (("", "N_DEM 100, 7.1 cells/d"), ("_n_dem_20", "N_DEM 20"), ("_5_cells_per_d", "5 cells/d"),
@@ -248,8 +299,15 @@ def analyze(summary, out_dir):
     plot = save(fig, out_dir, "calibration")
     text = table(rows)
     twins = twins_table(runs)
+    law = law_table(rows)
+    for row in rows:
+        row.pop("burst_rows", None)
     with open(os.path.join(out_dir, "calibration.md"), "w") as f:
         f.write(text + "\n")
+        if law:
+            f.write("\nThe paper's law of the bursts, P = K L_dep / D with the deposit each burst tore off, "
+                    "pooled per velocity over the seeds (paper: K = 0.91 +- 0.04; Pearson 0.71 in its "
+                    "Fig. dropvol):\n\n" + law + "\n")
         if twins:
             f.write("\nEach run beside its twins (the same run at N_DEM 20 or at 5 cells per d; a 5-cells "
                     "run with one of the model's open points switched), each pair over the time after "
@@ -263,4 +321,4 @@ def analyze(summary, out_dir):
     return result(summary, "calibration", "the largest u_lattice whose bursts carry >= 15 deposited "
                   "particles at 0.3-0.6 P_out and whose runs reach their end",
                   "not given (the paper's bursts: 0.3-0.6 P_out, 20-40 deposited particles)", choice, plot,
-                  table=text, runs_rows=rows)
+                  table=text, law_table=law, runs_rows=rows)
