@@ -140,7 +140,7 @@ def render(run_dir, out):
             ax.add_collection(circles)
         ax.set_title(f"({n}) fluid step {s}: {len(x)} particles")
         ax.set_aspect("equal")
-        fig.colorbar(image, ax=ax, label="fluid speed [lattice units: cells / fluid step]", shrink=0.8)
+        fig.colorbar(image, ax=ax, label="fluid speed [cells / fluid step]", shrink=0.8)
     ax = axes[3]
     columns = thermo(run_dir)
     if "pore[16]" in columns:
