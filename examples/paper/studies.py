@@ -214,7 +214,8 @@ def calibration(size):
     resolution, u_lattice from 0.02 down, two seeds each (seed-major order, so that a study
     cut short has every velocity once). Thermo rows every 10 fluid steps with the wall's
     force along the flow (f_walls[2]) and the fluid's on the particles (f_pore[14]), to read
-    the hold at each pressure peak. quick: 2 x 10^5 fluid steps per run; paper: 10^6.
+    the hold at each pressure peak. quick: 2 x 10^5 fluid steps per run, and u_lattice
+    0.00125 over 4 x 10^5; paper: 10^6.
     Beside them (quick and paper), the runs at u_lattice 0.005 again with N_DEM = 20 DEM
     substeps per fluid step instead of 100 (names ending in _n_dem_20): whether the
     statistics depend on N_DEM, which the paper sets for stability and cost only; and at 5
@@ -235,6 +236,14 @@ def calibration(size):
             if size != "tiny":
                 knobs["thermo_every"] = 1000
             runs.append((f"u_{u:g}_seed_{seed}", knobs))
+    # Slower still (quick), at the particle load through the pore of 2 x 10^5 fluid steps at
+    # 0.0025 (the inlet flux is proportional to u_in): whether the deposits grow longer before
+    # they tear off, as they did from 0.005 to 0.0025.
+    for seed in seeds:
+        for u in _counts(size, [], [0.00125], []):
+            knobs = next(k for name, k in runs if name == f"u_0.0025_seed_{seed}")
+            runs.append((f"u_{u:g}_seed_{seed}", dict(knobs, u_lattice=u, steps=2 * knobs["steps"])))
+
     def coarse(u, seed):
         """The same physical run at 5 cells per d (in.pore's acoustic scaling keeps the DEM
         step counts): the quick studies' resolution."""
