@@ -5,12 +5,13 @@ Per run, from its own files (every run, finished or cut short, up to its last th
 the fluid steps made and how the run ended; the largest deposited count and V_dep [d^3];
 P_0 (the clean pore, figures.common.clean_pressure) and P_max [P_out]; the bursts with the
 deposits at their peaks; at each peak the wall's hold along the flow against P pi D^2 / 4
-(burst records); the largest lattice Mach number. A burst's deposit is the median deposited
-count over the burst window up to its peak: the record's deposit_count, or, for records
-written before they carried it, the median over the BEFORE_PEAK fluid steps of thermo rows
-(deposit_before); never the record's count at the peak. The study's default velocity is the largest whose bursts carry at least 15
-deposited particles at 0.3-0.6 P_out (CRITERION_COUNT, CRITERION_P) and whose runs go on to
-their end.
+(burst records); the largest lattice Mach number; the paper's law of the bursts, P = K L_dep
+/ D (burst_law), per run and pooled per velocity. A burst's deposit is the median over the
+burst window up to its peak: the record's deposit_count and deposit_L, or, for records
+written before they carried them, the medians over the BEFORE_PEAK fluid steps of thermo rows
+(deposit_before); never the record's count at the peak. The study's default velocity is the
+largest whose bursts carry at least 15 deposited particles at 0.3-0.6 P_out (CRITERION_COUNT,
+CRITERION_P) and whose runs go on to their end.
 
 Usage: analyze.py <calibration study folder>   (writes calibration.md beside the plot)"""
 import os
@@ -94,7 +95,7 @@ def burst_law(rows, D, p0):
     """The paper's law of the bursts, P = K L_dep / D (its Fig. porediameter: K = 0.91), on a
     run's (or runs') bursts with the deposits they tore off: K through the origin on P - P_0
     (the pressure the deposit adds) and on P, and the Pearson coefficient of P with L_dep / D,
-    each (value, low, high) with a 95 % interval over bursts resampled (a run has too few
+    each (value, low, high) with a 95 % interval over bursts resampled (a study has too few
     seeds for an interval over runs). rows: bursts_with_deposits rows; p0 per row."""
     from fit_stats import bootstrap, pearson, slope_through_origin
     x = [b["deposit_L"] / D for b in rows]
