@@ -33,7 +33,7 @@ def analyze(summary, out_dir):
         ax.plot(x, y, "o", ms=4, alpha=0.7)
     x = np.concatenate([g[0] for g in groups if len(g[0])] or [np.zeros(0)])
     draw_fits(ax, fits, x.max() if len(x) else 1.0, PAPER_SLOPE)
-    ax.set_xlabel("V_dep at the peak [D^3]")
+    ax.set_xlabel("V_dep of the deposit the burst tore off [D^3]")
     ax.set_ylabel("P_peak [P_out]")
     ax.set_title(f"{len(x)} bursts from {sum(1 for g in groups if len(g[0]))} runs; "
                  f"Pearson {fmt(*fits['pearson'])} (paper {PAPER_PEARSON})", fontsize=9)

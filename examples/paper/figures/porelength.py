@@ -22,7 +22,7 @@ def analyze(summary, out_dir):
         ax.plot(x, y, "o", ms=4, label=f"L = {float(run['knobs']['Lp']):.2f}")
     top = max([max(x) for x, _ in groups if len(x)] or [1.0])
     draw_fits(ax, fits, top, PAPER_COEFFICIENT)
-    ax.set_xlabel("L_dep at the peak [d]")
+    ax.set_xlabel("L_dep of the deposit the burst tore off [d]")
     ax.set_ylabel("P_peak [P_out]")
     ax.set_title(f"Pearson {fmt(*fits['pearson'])} (paper {PAPER_PEARSON})", fontsize=9)
     ax.legend(fontsize=7, ncol=2)
