@@ -1,6 +1,7 @@
 """Fits with confidence intervals from a bootstrap over runs: the runs of an ensemble are the
 independent samples (the bursts of one run are not: they share its deposit history), so each
-resample draws whole runs with replacement and refits all their points.
+resample draws whole runs with replacement and refits all their points. A single run has
+only its bursts to resample (figures.common.resampled), and the figures say so.
 """
 import numpy as np
 
@@ -58,5 +59,5 @@ def fmt(value, low, high):
     if not np.isfinite(value):
         return "n/a"
     if not (np.isfinite(low) and np.isfinite(high)):
-        return f"{value:.3g} [no interval: < 2 runs]"
+        return f"{value:.3g} [no interval: < 2 samples]"
     return f"{value:.3g} [{low:.3g}, {high:.3g}]"

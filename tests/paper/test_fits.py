@@ -138,6 +138,30 @@ class FiguresCompareLikeWithLike(unittest.TestCase):
         fits = common.pressure_fits(self.summary, dropvol.per_cube_of_diameter)
         self.assertAlmostEqual(fits["excess_through_origin"][0], 4 * self.c * D / math.pi, places=9)
 
+    def test_one_run_resamples_its_bursts_and_says_so(self):
+        """A paper-length run is one run: its intervals come from its bursts, and the text
+        says so; two runs resample whole runs."""
+        self.assertEqual(common.pressure_fits(self.summary, lambda run, b: b["L_dep"])["unit"], "runs")
+        rng = random.Random(11)
+        rows = []
+        for _ in range(40):
+            length = rng.uniform(0.2, 2.0)
+            rows.append((length, length, 0.07 + self.c * length + rng.gauss(0, 0.05)))
+        one = write_run(os.path.join(self.tmp.name, "one"), 0.07, rows)
+        summary = dict(self.summary, runs=[one], finished=1)
+        fits = common.pressure_fits(summary, lambda run, b: b["L_dep"])
+        self.assertEqual(fits["unit"], "bursts")
+        value, low, high = fits["excess_through_origin"]
+        self.assertLess(low, self.c)
+        self.assertGreater(high, self.c)
+        self.assertLess(high - low, 0.1)
+        self.assertTrue(low < value < high)
+        self.assertIn("over the bursts of one run", common.fits_text(fits))
+        # One burst alone has no interval.
+        lone = write_run(os.path.join(self.tmp.name, "lone"), 0.07, rows[:1])
+        fits = common.pressure_fits(dict(self.summary, runs=[lone], finished=1), lambda run, b: b["L_dep"])
+        self.assertTrue(math.isnan(fits["through_origin"][1]))
+
     def test_figure_results_name_all_three_fits(self):
         from figures import porelength
         out = os.path.join(self.tmp.name, "out")

@@ -45,12 +45,23 @@ def clean_pressure(run, share=0.25):
     return float(np.mean(rows)) if rows else np.nan
 
 
+def resampled(groups):
+    """(groups, unit) for fit_stats.bootstrap: whole runs where two or more runs have bursts;
+    a single run's bursts one by one otherwise (a paper-length run is one run). An interval
+    over one run's bursts leaves out the spread between runs and the bursts' shared deposit
+    history, so the figures say which it is."""
+    if sum(1 for x, _ in groups if len(x)) >= 2:
+        return groups, "runs"
+    return [([xi], [yi]) for x, y in groups for xi, yi in zip(x, y)], "bursts"
+
+
 def pressure_fits(summary, x_of):
     """The fits of the peak pressure against x_of(run, burst), the same three for every
     figure so that like is compared with like: the paper's line through the origin on P, the
     same on the pressure the deposit adds, P - P_0 (P_0 = clean_pressure of each run), and a
     line with an intercept on P. Each value (value, low, high) with fit_stats.bootstrap's
-    interval over runs; also the Pearson coefficient and the per-run point groups."""
+    interval over runs (over bursts for a single run: `resampled`); also the Pearson
+    coefficient, the per-run point groups and `unit`, what the intervals resample."""
     from fit_stats import bootstrap, intercept, pearson, slope, slope_through_origin
     groups, excess = [], []
     for run in finished_runs(summary):
@@ -60,19 +71,22 @@ def pressure_fits(summary, x_of):
         groups.append((x, [b["P_peak"] for b in rows]))
         excess.append((x, [b["P_peak"] - p0 for b in rows] if np.isfinite(p0) else []))
     excess = [(x, y) for x, y in excess if len(y)]
-    return dict(groups=groups, excess_groups=excess,
-                through_origin=bootstrap(groups, slope_through_origin),
-                excess_through_origin=bootstrap(excess, slope_through_origin),
-                slope=bootstrap(groups, slope), intercept=bootstrap(groups, intercept),
-                pearson=bootstrap(groups, pearson))
+    samples, unit = resampled(groups)
+    excess_samples, _ = resampled(excess)
+    return dict(groups=groups, excess_groups=excess, unit=unit,
+                through_origin=bootstrap(samples, slope_through_origin),
+                excess_through_origin=bootstrap(excess_samples, slope_through_origin),
+                slope=bootstrap(samples, slope), intercept=bootstrap(samples, intercept),
+                pearson=bootstrap(samples, pearson))
 
 
 def fits_text(fits):
     """The three fits in one line, for results.json and the plot's title."""
     from fit_stats import fmt
+    over = " (intervals over the bursts of one run)" if fits["unit"] == "bursts" else ""
     return (f"through 0: {fmt(*fits['through_origin'])}; P - P_0 through 0: "
             f"{fmt(*fits['excess_through_origin'])}; with intercept: {fmt(*fits['slope'])} "
-            f"(intercept {fmt(*fits['intercept'])})")
+            f"(intercept {fmt(*fits['intercept'])}){over}")
 
 
 def draw_fits(ax, fits, top, paper=None, paper_label="paper"):

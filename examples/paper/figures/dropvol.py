@@ -36,7 +36,8 @@ def analyze(summary, out_dir):
     ax.set_xlabel("V_dep of the deposit the burst tore off [D^3]")
     ax.set_ylabel("P_peak [P_out]")
     ax.set_title(f"{len(x)} bursts from {sum(1 for g in groups if len(g[0]))} runs; "
-                 f"Pearson {fmt(*fits['pearson'])} (paper {PAPER_PEARSON})", fontsize=9)
+                 f"Pearson {fmt(*fits['pearson'])} (paper {PAPER_PEARSON}); "
+                 f"intervals over {fits['unit']}", fontsize=9)
     ax.legend(fontsize=7)
     return result(summary, "dropvol", "slope of P against V_dep [D^3] (per pore volume beside); Pearson",
                   f"{PAPER_SLOPE}(1) (4 K / pi = {4 * PAPER_K / np.pi:.3g} per D^3, K L / D = "

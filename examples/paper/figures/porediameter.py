@@ -9,7 +9,7 @@ import numpy as np
 
 from fit_stats import bootstrap, fmt
 from figures.common import (bursts, draw_fits, finished_runs, fits_text, p_out, plt, pressure_fits,
-                            result, save, thermo)
+                            resampled, result, save, thermo)
 
 PAPER_K = 0.91
 
@@ -40,7 +40,7 @@ def analyze(summary, out_dir):
     groups = fits["groups"]
     K = fits["through_origin"]
     f_a_groups = [([p[2] for p in ps if np.isfinite(p[2])],) * 2 for ps in points]
-    f_a = bootstrap(f_a_groups, lambda x, y: float(np.mean(x)) if len(x) else np.nan)
+    f_a = bootstrap(resampled(f_a_groups)[0], lambda x, y: float(np.mean(x)) if len(x) else np.nan)
     fig, ax = plt.subplots(figsize=(6, 4.5))
     for D in sorted({float(run["knobs"]["D"]) for run in runs}):
         x = [p[0] for run, ps in zip(runs, points) if float(run["knobs"]["D"]) == D for p in ps]

@@ -24,7 +24,8 @@ def analyze(summary, out_dir):
     draw_fits(ax, fits, top, PAPER_COEFFICIENT)
     ax.set_xlabel("L_dep of the deposit the burst tore off [d]")
     ax.set_ylabel("P_peak [P_out]")
-    ax.set_title(f"Pearson {fmt(*fits['pearson'])} (paper {PAPER_PEARSON})", fontsize=9)
+    ax.set_title(f"Pearson {fmt(*fits['pearson'])} (paper {PAPER_PEARSON}); "
+                 f"intervals over {fits['unit']}", fontsize=9)
     ax.legend(fontsize=7, ncol=2)
     return result(summary, "porelength", "c in P = c L_dep; Pearson",
                   f"{PAPER_COEFFICIENT}(1); {PAPER_PEARSON}(1)",
