@@ -236,6 +236,34 @@ class BurstLaw(unittest.TestCase):
             self.assertEqual((row["deposit"], row["deposit_L"]), (21, 1.4))
 
 
+class TwinStatistics(unittest.TestCase):
+    """What the N_DEM and resolution comparisons report per run: deposit sizes and pressures
+    after the warm-up only, the deposits the bursts tore off and the wall's hold per deposited
+    particle touching it at the peaks."""
+
+    def test_statistics_of_a_known_run(self):
+        from figures import calibration
+        with tempfile.TemporaryDirectory() as tmp:
+            # Bursts at DEM steps 10 000 and 10 100 (time 100 and 101), deposits of 20 and 24,
+            # each record's wall force -1 on 3 deposited particles touching the wall.
+            run = write_run(os.path.join(tmp, "run"), 0.05, [(9.0, 1.2, 0.30), (11.0, 1.4, 0.33)],
+                            deposits=[(20, 9.0, 1.2), (24, 11.0, 1.4)])
+            steps = np.arange(0, 12001, 100)
+            count = np.where(steps < 2000, 40, np.minimum(steps // 500, 17))  # the warm-up's 40 must not count
+            pressure = np.where(steps < 2000, 0.9, 0.05 + 0.28 * (steps == 10000))
+            columns = {"Step": list(steps), "pore[7]": list(count), "pore[16]": list(pressure)}
+            times = (steps * 0.01, 20.0, columns)
+            stats = calibration.twin_statistics(run, times, np.random.default_rng(1), until=1000.0)
+        self.assertEqual(stats["largest"], 17)
+        self.assertAlmostEqual(stats["P_max"], 0.33, places=12)
+        self.assertAlmostEqual(stats["hold"], 1.0 / 3.0, places=12)
+        self.assertAlmostEqual(stats["peak_count"], 22.0, places=12)
+        self.assertAlmostEqual(stats["peak_P"], 0.315, places=12)
+        row = calibration.twin_row("run", "5 cells/d", stats)
+        self.assertEqual(row.count("|"), calibration.TWIN_HEADER[1].count("|"))
+        self.assertIn("| 17 | 0.330 |", row)
+
+
 class StudyScene(unittest.TestCase):
     """A study resumed after in.pore gained a knob keeps its old copy of in.pore, which would
     take the knob and ignore it: run_study refuses such a run (ensemble.unknown_knobs)."""

@@ -220,9 +220,11 @@ def run_times(run):
 def twin_statistics(run, times, rng, until):
     """What the N_DEM and resolution comparisons compare, per run (its run_times `times`),
     from the end of its warm-up to `until` time units after it: the mean deposited count and
-    the mean P / P_out over time (block-bootstrap intervals), the bursts per 10^4 time units
-    (the paper's fluid steps) and the mean deposit torn off (bursts_with_deposits) and P at the
-    peaks."""
+    the mean P / P_out over time (block-bootstrap intervals), the largest deposited count and
+    P_max, the bursts per 10^4 time units (the paper's fluid steps), the mean deposit torn off
+    (bursts_with_deposits) and P at the peaks, and the wall's hold per deposited particle
+    touching it at the peaks (-wall_F / on_wall, median; the script's force unit, which the
+    resolution does not change)."""
     t, warmup, columns = times
     warm = (t > warmup) & (t <= warmup + until)
     if warm.sum() < 2:
@@ -230,24 +232,30 @@ def twin_statistics(run, times, rng, until):
     dt = lattice_timing(run["folder"])["dt_dem"]
     rows = [b for b in bursts_with_deposits(run, columns) if warmup < b["step"] * dt <= warmup + until]
     span = t[warm][-1] - t[warm][0]
-    return dict(time=span, count=block_mean(t[warm], np.asarray(columns["pore[7]"], float)[warm], rng),
-                P=block_mean(t[warm], np.asarray(columns["pore[16]"], float)[warm], rng),
+    count = np.asarray(columns["pore[7]"], float)[warm]
+    pressure = np.asarray(columns["pore[16]"], float)[warm]
+    holds = [-b["wall_F"] / b["on_wall"] for b in rows if b.get("on_wall", 0) > 0]
+    return dict(time=span, count=block_mean(t[warm], count, rng),
+                P=block_mean(t[warm], pressure, rng), largest=int(count.max()), P_max=float(pressure.max()),
+                hold=float(np.median(holds)) if holds else np.nan,
                 burst_rate=1e4 * len(rows) / span if span > 0 else np.nan,
                 peak_count=float(np.mean([b["deposit"] for b in rows])) if rows else np.nan,
                 peak_P=float(np.mean([b["P_peak"] for b in rows])) if rows else np.nan)
 
 
-TWIN_HEADER = ["| run | variant | time after warm-up | mean deposited | mean P [P_out] | bursts per 10^4 "
-               "| deposit torn off, mean | P_peak, mean |", "|---|---|---|---|---|---|---|---|"]
+TWIN_HEADER = ["| run | variant | time after warm-up | mean deposited | mean P [P_out] | largest deposit "
+               "| P_max [P_out] | bursts per 10^4 | deposit torn off, mean | P_peak, mean "
+               "| wall hold per particle at the peaks |", "|---|---|---|---|---|---|---|---|---|---|---|"]
 
 
 def twin_row(name, label, stats):
     """One row of a twins table: twin_statistics of run `name` under `label`, or dashes."""
     if stats is None:
-        return f"| {name} | {label} | - | - | - | - | - | - |"
+        return f"| {name} | {label} |" + " - |" * (len(TWIN_HEADER[1].split("|")) - 4)
     fmt = lambda v: f"{v[0]:.2f} [{v[1]:.2f}, {v[2]:.2f}]"
     return (f"| {name} | {label} | {stats['time']:.0f} | {fmt(stats['count'])} | {fmt(stats['P'])} "
-            f"| {stats['burst_rate']:.2f} | {stats['peak_count']:.1f} | {stats['peak_P']:.3f} |")
+            f"| {stats['largest']} | {stats['P_max']:.3f} | {stats['burst_rate']:.2f} "
+            f"| {stats['peak_count']:.1f} | {stats['peak_P']:.3f} | {stats['hold']:.3g} |")
 
 
 def twins_table(runs):
