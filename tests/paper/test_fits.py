@@ -264,6 +264,22 @@ class TwinStatistics(unittest.TestCase):
         self.assertIn("| 17 | 0.330 |", row)
 
 
+class CalibrationTable(unittest.TestCase):
+    def test_runs_not_yet_made_are_listed_in_one_line(self):
+        """A study run in parts (the paper-length run is one of 24) lists its other runs once,
+        not as 23 rows of dashes."""
+        from figures import calibration
+        base = dict(u=0.0025, n_dem=100, cells_per_d=7.1)
+        made = dict(base, name="u_0.0025_seed_100003", state="done", reason="", fluid_steps=10 ** 6,
+                    count=39, V_dep=20.7, P0=0.009, P_max=0.357, bursts=1, peaks=[(0.35, 30)], hold=0.7,
+                    mach=0.19, inlet=0.97, K=(0.6, 0.5, 0.7), pearson=(0.9, 0.8, 1.0))
+        waiting = [dict(base, name=f"u_0.0025_seed_{s}", state="incomplete") for s in (1, 2)]
+        text = calibration.table([waiting[0], made, waiting[1]])
+        self.assertEqual(sum(1 for line in text.splitlines() if line.startswith("| u_")), 1)
+        self.assertIn("| 0.357 | 1 (0.35: 30) |", text)
+        self.assertIn("Without a thermo row yet (2): u_0.0025_seed_1, u_0.0025_seed_2.", text)
+
+
 class StudyScene(unittest.TestCase):
     """A study resumed after in.pore gained a knob keeps its old copy of in.pore, which would
     take the knob and ignore it: run_study refuses such a run (ensemble.unknown_knobs)."""

@@ -146,10 +146,9 @@ def table(rows):
              "| bursts (P_peak: deposited over the 1000 fluid steps before it, median) | wall hold / (P pi D^2/4) at peaks, median | max Mach "
              "| inlet rate / c_in u_in W^2 / V_p | K of P - P_0 = K L_dep / D (paper 0.91) | Pearson (P, L_dep) |",
              "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    waiting = [r["name"] for r in rows if "fluid_steps" not in r]
     for r in rows:
         if "fluid_steps" not in r:
-            lines.append(f"| {r['name']} | {r['u']:g} | {r['n_dem']} | {r['cells_per_d']:g} | {r['state']} "
-                         "| - | - | - | - | - | - | - | - | - | - |")
             continue
         ended = r["state"] if r["state"] != "failed" else "stopped: " + stop_reason(r["reason"])
         peaks = ", ".join(f"{p:.2f}: {c}" for p, c in r["peaks"][:8]) + (" ..." if len(r["peaks"]) > 8 else "")
@@ -157,6 +156,8 @@ def table(rows):
                      f"| {r['P0']:.3f} | {r['P_max']:.3f} | {r['bursts']} ({peaks or 'none'}) "
                      f"| {r['hold']:.2f} | {r['mach']:.3f} | {r['inlet']:.2f} | {fmt(*r['K'])} "
                      f"| {fmt(*r['pearson'])} |")
+    if waiting:  # a study run in parts (--runs) lists the runs it has not made in one line
+        lines.append(f"\nWithout a thermo row yet ({len(waiting)}): {', '.join(waiting)}.")
     return "\n".join(lines)
 
 
