@@ -3,12 +3,16 @@
 name (figures/<study>.py), writes <study>/results.json and the plot, prints the row of
 doc/paper.md (paper's value, ours with its 95 % bootstrap interval over runs, run cost).
 
-Usage: analyze.py <study folder> [--figure NAME]   (run_study.py calls it after the runs)
+Usage: analyze.py <study folder> [--figure NAME] [--as-it-stands]
+(run_study.py calls it after the runs)
 
 --figure analyses the folder's runs as another figure: e.g. the single-burst figure from the
 largest burst among a seed ensemble, `analyze.py studies/dropvol --figure singlejump`
 (results in <folder>/<NAME>/).
+--as-it-stands also takes the runs cut short or still under way, with the rows and bursts they
+have so far (a paper-length run built up over several sittings); the results name them.
 """
+import argparse
 import importlib
 import json
 import os
@@ -33,8 +37,21 @@ def _plain(value):
     return value
 
 
-def analyze(study_dir, figure=None):
+def take_runs_as_they_stand(summary, study_dir):
+    """Marks the runs that have a log but did not finish as done, for the analyses that take
+    finished runs only; returns their names."""
+    partial = [r for r in summary["runs"] if r["state"] == "incomplete"
+               and os.path.exists(os.path.join(r.get("folder") or os.path.join(study_dir, "runs", r["name"]),
+                                               "log.liggghts"))]
+    for r in partial:
+        r["state"] = "done"
+    summary["finished"] = sum(1 for r in summary["runs"] if r["state"] == "done")
+    return [r["name"] for r in partial]
+
+
+def analyze(study_dir, figure=None, as_it_stands=False):
     summary = load_summary(study_dir)
+    partial = take_runs_as_they_stand(summary, study_dir) if as_it_stands else []
     out_dir = study_dir
     if figure is not None and figure != summary["study"]:
         out_dir = os.path.join(study_dir, figure)
@@ -43,17 +60,20 @@ def analyze(study_dir, figure=None):
     result = module.analyze(summary, out_dir)
     result["core_hours"] = round(summary["core_hours"], 4)
     result["runs_of_study"] = summary["study"]
+    result["as_it_stands"] = partial
     with open(os.path.join(out_dir, "results.json"), "w") as f:
         json.dump(_plain(result), f, indent=1)
     print(f"| {result['figure']} | {result['paper']} | {result['ours']} | "
-          f"{result['finished']}/{result['runs']} runs, {result['core_hours']} core-h |")
+          f"{result['finished']}/{result['runs']} runs, {result['core_hours']} core-h"
+          + (f"; as they stand: {', '.join(partial)}" if partial else "") + " |")
     return result
 
 
 if __name__ == "__main__":
-    if len(sys.argv) == 2:
-        analyze(sys.argv[1])
-    elif len(sys.argv) == 4 and sys.argv[2] == "--figure":
-        analyze(sys.argv[1], sys.argv[3])
-    else:
-        sys.exit(__doc__)
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("study_dir")
+    parser.add_argument("--figure")
+    parser.add_argument("--as-it-stands", action="store_true")
+    args = parser.parse_args()
+    analyze(args.study_dir, args.figure, args.as_it_stands)

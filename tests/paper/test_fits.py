@@ -280,6 +280,21 @@ class CalibrationTable(unittest.TestCase):
         self.assertIn("Without a thermo row yet (2): u_0.0025_seed_1, u_0.0025_seed_2.", text)
 
 
+class AnalysisAsItStands(unittest.TestCase):
+    def test_runs_under_way_are_taken_only_when_asked_and_named(self):
+        import analyze
+        with tempfile.TemporaryDirectory() as tmp:
+            done = write_run(os.path.join(tmp, "runs", "done"), 0.05, [(1.0, 0.5, 0.2)])
+            going = write_run(os.path.join(tmp, "runs", "going"), 0.05, [(2.0, 1.0, 0.4)])
+            going["state"] = "incomplete"
+            waiting = dict(name="waiting", state="incomplete", folder=os.path.join(tmp, "runs", "waiting"))
+            summary = dict(runs=[done, going, waiting], finished=1)
+            self.assertEqual(len(common.finished_runs(summary)), 1)
+            self.assertEqual(analyze.take_runs_as_they_stand(summary, tmp), ["going"])
+            self.assertEqual([r["name"] for r in common.finished_runs(summary)], ["done", "going"])
+            self.assertEqual(summary["finished"], 2)
+
+
 class StudyScene(unittest.TestCase):
     """A study resumed after in.pore gained a knob keeps its old copy of in.pore, which would
     take the knob and ignore it: run_study refuses such a run (ensemble.unknown_knobs)."""

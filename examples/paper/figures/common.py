@@ -46,11 +46,11 @@ def clean_pressure(run, share=0.25):
 
 
 def resampled(groups):
-    """(groups, unit) for fit_stats.bootstrap: whole runs where two or more runs have bursts;
-    a single run's bursts one by one otherwise (a paper-length run is one run). An interval
+    """(groups, unit) for fit_stats.bootstrap: whole runs, unless a single run has bursts:
+    then its bursts one by one (a paper-length run is one run). An interval
     over one run's bursts leaves out the spread between runs and the bursts' shared deposit
     history, so the figures say which it is."""
-    if sum(1 for x, _ in groups if len(x)) >= 2:
+    if sum(1 for x, _ in groups if len(x)) != 1:
         return groups, "runs"
     return [([xi], [yi]) for x, y in groups for xi, yi in zip(x, y)], "bursts"
 
