@@ -40,9 +40,10 @@ def _plain(value):
 def take_runs_as_they_stand(summary, study_dir):
     """Marks the runs that have a log but did not finish as done, for the analyses that take
     finished runs only; returns their names."""
-    partial = [r for r in summary["runs"] if r["state"] == "incomplete"
-               and os.path.exists(os.path.join(r.get("folder") or os.path.join(study_dir, "runs", r["name"]),
-                                               "log.liggghts"))]
+    def has_rows(r):  # its log, or the thermo rows compacted evidence kept
+        folder = r.get("folder") or os.path.join(study_dir, "runs", r["name"])
+        return any(os.path.exists(os.path.join(folder, f)) for f in ("log.liggghts", "thermo.csv"))
+    partial = [r for r in summary["runs"] if r["state"] == "incomplete" and has_rows(r)]
     for r in partial:
         r["state"] = "done"
     summary["finished"] = sum(1 for r in summary["runs"] if r["state"] == "done")
@@ -61,8 +62,11 @@ def analyze(study_dir, figure=None, as_it_stands=False):
     result["core_hours"] = round(summary["core_hours"], 4)
     result["runs_of_study"] = summary["study"]
     result["as_it_stands"] = partial
+    saved = dict(result)
+    if saved.get("plot"):  # beside results.json: the folder may be moved (doc/ keeps evidence)
+        saved["plot"] = os.path.relpath(saved["plot"], out_dir)
     with open(os.path.join(out_dir, "results.json"), "w") as f:
-        json.dump(_plain(result), f, indent=1)
+        json.dump(_plain(saved), f, indent=1)
     print(f"| {result['figure']} | {result['paper']} | {result['ours']} | "
           f"{result['finished']}/{result['runs']} runs, {result['core_hours']} core-h"
           + (f"; as they stand: {', '.join(partial)}" if partial else "") + " |")

@@ -3,7 +3,9 @@
 repository (a study's own folder holds restart files and fluid checkpoints of tens of MB):
 summary.txt, results.json and the plots, the analysis's table if any, and per run its
 bursts.txt and the thermo columns the analyses read (thermo.csv, every `every`-th row and
-every row within a burst's window), with the ERROR line of a run that stopped.
+every row from a burst's window before its peak, BURST_WINDOW fluid steps, to half a window
+after it), with the ERROR line of a run that stopped. analyze.py reads the compacted folder
+as it reads the study (study_io).
 
 Usage: compact_study.py <study folder> <destination> [--every N]
 """
@@ -49,7 +51,8 @@ def compact(study, dest, every=10):
         names = [c for c in COLUMNS if c in columns]
         peaks = [b["step"] for b in study_io.bursts(run)]
         steps = columns["Step"]
-        near = lambda s: any(abs(s - p) <= 5e4 for p in peaks)  # noqa: E731
+        window = study_io.burst_window_dem_steps(run, study_io.read_knobs(run))
+        near = lambda s: any(-window <= s - p <= window / 2 for p in peaks)  # noqa: E731
         with open(os.path.join(out, "thermo.csv"), "w", newline="") as f:
             w = csv.writer(f)
             w.writerow(names)

@@ -1,9 +1,16 @@
 """Reads what the runs of a study wrote: each run's thermo rows (log.liggghts, by column name),
 its erosive bursts (bursts.txt, fix lbm/pore's burst_file) and the study's summary.json.
 
+A study's evidence compacted for the repository (compact_study.py: summary.txt, and per run
+knobs.json, state.txt, bursts.txt and thermo.csv, no log) reads the same way, so the figures
+of doc/ can be drawn again from it: the thermo rows come from thermo.csv, the time steps from
+the run's knobs (in.pore's acoustic scaling), the summary from the runs' files.
+
 Thermo columns are named as LIGGGHTS prints them: pore[16] is f_pore[16] (P / P_out),
 pore[17] the largest P / P_out so far, pore[18] the burst count, pore[6] V_dep, pore[8] L_dep.
 """
+import csv
+import glob
 import json
 import os
 import re
@@ -17,6 +24,10 @@ from plot_pressure import read_thermo  # noqa: E402  (the main example's log rea
 # medians over the burst window up to the peak (at the peak a sliding deposit has dropped out
 # of the count). Rows of files written before the last three existed have the first thirteen,
 # before wall_F, on_wall and P_pi_D2_4 the first ten.
+# The burst window of fix lbm/pore's detector (in.pore's default, in the paper's fluid steps):
+# the time up to a peak over which a burst record takes its deposit (the median count, V_dep
+# and L_dep).
+BURST_WINDOW = 1000
 BURST_COLUMNS = ("step", "time", "P_peak", "P_after", "delta_P", "delta_t", "V_dep", "L_dep",
                  "count_before", "count_after", "wall_F", "on_wall", "P_pi_D2_4",
                  "deposit_count", "deposit_V", "deposit_L")
@@ -29,13 +40,36 @@ def lattice_timing(run_dir):
     than the paper's, so neither the DEM steps per fluid step nor the pressure unit
     P_out = rho (dx / dt_f)^2 / 3 may be assumed."""
     pattern = re.compile(r"dt_lbm = (\S+) \(n_dem = (\d+) x dt_dem = (\S+)\), dx = (\S+)")
-    with open(os.path.join(run_dir, "log.liggghts"), errors="replace") as f:
+    log = os.path.join(run_dir, "log.liggghts")
+    if not os.path.exists(log) and os.path.exists(os.path.join(run_dir, "knobs.json")):
+        return timing_of_knobs(read_knobs(run_dir))
+    with open(log, errors="replace") as f:
         for line in f:
             m = pattern.search(line)
             if m:
                 return dict(dt_f=float(m.group(1)), n_dem=int(m.group(2)),
                             dt_dem=float(m.group(3)), dx=float(m.group(4)))
     raise ValueError(f"{run_dir}/log.liggghts: no fix lbm/pore setup line with dt_lbm and n_dem")
+
+
+def burst_window_dem_steps(run_dir, knobs):
+    """The run's burst window (its knob burst_window, in the paper's fluid steps) in DEM steps."""
+    return float(knobs.get("burst_window", BURST_WINDOW)) / lattice_timing(run_dir)["dt_dem"]
+
+
+def read_knobs(run_dir):
+    with open(os.path.join(run_dir, "knobs.json")) as f:
+        return json.load(f)
+
+
+def timing_of_knobs(knobs):
+    """lattice_timing of a compacted run, which has no log: in.pore's own arithmetic on its
+    knobs (dx = 1 / cells_per_d, the fluid step 7.1 dx, n_dem_used = round(n_dem dt_f))."""
+    from studies import PAPER_CELLS_PER_D, run_dem_steps_per_fluid_step
+    dx = 1.0 / float(knobs["cells_per_d"])
+    dt_f = dx * PAPER_CELLS_PER_D
+    n_dem = run_dem_steps_per_fluid_step(knobs)
+    return dict(dt_f=dt_f, n_dem=n_dem, dt_dem=dt_f / n_dem, dx=dx)
 
 
 def p_out(run_dir, rho=1.0):
@@ -45,10 +79,16 @@ def p_out(run_dir, rho=1.0):
 
 
 def thermo(run_dir):
-    """{column: [values]} of all thermo rows of the run, or {} when it has none."""
+    """{column: [values]} of all thermo rows of the run, or {} when it has none (a compacted
+    run: the rows its thermo.csv kept)."""
     log = os.path.join(run_dir, "log.liggghts")
     if not os.path.exists(log):
-        return {}
+        kept = os.path.join(run_dir, "thermo.csv")
+        if not os.path.exists(kept):
+            return {}
+        with open(kept, newline="") as f:
+            rows = list(csv.reader(f))
+        return {name: [float(row[j]) for row in rows[1:]] for j, name in enumerate(rows[0])}
     try:
         header, rows = read_thermo(log)
     except SystemExit:  # read_thermo exits on a log without thermo rows
@@ -100,8 +140,32 @@ def run_figures(run_dir, warmup=0):
 
 
 def load_summary(study_dir):
-    with open(os.path.join(study_dir, "summary.json")) as f:
-        return json.load(f)
+    """The study's summary.json, or for compacted evidence (no summary.json) the same from its
+    summary.txt's first line and each run's knobs.json and state.txt."""
+    path = os.path.join(study_dir, "summary.json")
+    if os.path.exists(path) or not os.path.exists(os.path.join(study_dir, "summary.txt")):
+        with open(path) as f:
+            return json.load(f)
+    with open(os.path.join(study_dir, "summary.txt")) as f:
+        m = re.match(r"study (\S+) \((\w+)", f.readline())
+    runs = []
+    for folder in sorted(glob.glob(os.path.join(study_dir, "runs", "*"))):
+        if not os.path.exists(os.path.join(folder, "knobs.json")):
+            continue
+        state, reason = "incomplete", ""
+        if os.path.exists(os.path.join(folder, "state.txt")):
+            with open(os.path.join(folder, "state.txt")) as f:
+                state, _, reason = f.read().partition("\n")
+        runs.append(dict(name=os.path.basename(folder), state=state.strip(), reason=reason.strip(),
+                         folder=folder, knobs=read_knobs(folder)))
+    core_hours = 0.0
+    if os.path.exists(os.path.join(study_dir, "results.json")):
+        with open(os.path.join(study_dir, "results.json")) as f:
+            core_hours = json.load(f).get("core_hours") or 0.0
+    return dict(study=m.group(1), size=m.group(2), runs=runs, core_hours=core_hours,
+                finished=sum(r["state"] == "done" for r in runs),
+                failed=sum(r["state"] == "failed" for r in runs),
+                incomplete=sum(r["state"] == "incomplete" for r in runs))
 
 
 def finished_runs(summary):

@@ -100,8 +100,8 @@ def ensemble(args, work):
         ok &= check(f"{name} mean jump from its bursts.txt", len(rows) > 0 and
                     abs(got - mean_jump) <= 1e-12 * max(1.0, abs(mean_jump)),
                     f"{got} over {len(rows)} bursts", f"== {mean_jump}")
-    ok &= check("plot written", os.path.getsize(results["plot"]) > 10000,
-                os.path.getsize(results["plot"]), "> 10 kB")
+    plot = os.path.join(work, results["plot"])  # results.json names its plot beside it
+    ok &= check("plot written", os.path.getsize(plot) > 10000, os.path.getsize(plot), "> 10 kB")
     return ok
 
 

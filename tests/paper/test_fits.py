@@ -212,6 +212,130 @@ class BurstDeposit(unittest.TestCase):
             self.assertAlmostEqual(porelength.analyze(summary, out)["excess_coefficient"][0], c, places=9)
 
 
+def sliding_deposit(peak, full, window=100000, step=1000):
+    """(DEM step, deposited count) rows every `step` DEM steps: a deposit of `full` particles
+    held until 80 % of the window before the peak, then sliding out one particle per row,
+    down to 1 at the peak. Its V_dep is count / 2, its L_dep count / 20."""
+    rows = []
+    for s in range(peak - 2 * window, peak + 1, step):
+        n = full if s < peak - 0.8 * window else max(1, full - (s - (peak - 0.8 * window)) // step)
+        rows.append((s, int(n)))
+    return rows
+
+
+def add_sliding_deposits(run, peaks, fulls, p0):
+    """Moves a write_run run's bursts to `peaks` (window 10^5 DEM steps at its n_dem 100) and
+    appends thermo rows in which a deposit of each `fulls` slides out before its peak."""
+    with open(os.path.join(run["folder"], "bursts.txt")) as f:
+        head, *lines = f.read().splitlines()
+    with open(os.path.join(run["folder"], "bursts.txt"), "w") as f:
+        f.write(head + "\n" + "".join(f"{peak} " + line.split(" ", 1)[1] + "\n"
+                                       for peak, line in zip(peaks, lines)))
+    names = HEADER.split()
+    with open(os.path.join(run["folder"], "log.liggghts"), "a") as f:
+        for peak, full in zip(peaks, fulls):
+            for step, n in sliding_deposit(peak, full)[100:]:
+                row = dict.fromkeys(names, 0.0)
+                row.update({"Step": step, "pore[16]": p0, "pore[17]": p0, "pore[7]": n,
+                            "pore[6]": n / 2, "pore[8]": n / 20})
+                f.write(" ".join(f"{row[k]:.12g}" for k in names) + "\n")
+
+
+class LargestDepositInTheWindow(unittest.TestCase):
+    """Beside the record's median, the largest deposit in the burst window: a deposit that
+    slid out of the count for more than half of the window is lost by the median and kept by
+    the largest, with the V_dep and L_dep of the same thermo row."""
+
+    def test_the_largest_keeps_a_deposit_the_median_loses(self):
+        from figures import calibration
+        rows = sliding_deposit(300000, 29)
+        columns = {"Step": [s for s, _ in rows], "pore[7]": [n for _, n in rows],
+                   "pore[6]": [n / 2 for _, n in rows], "pore[8]": [n / 20 for _, n in rows]}
+        self.assertLess(calibration.deposit_before(columns, 300000, 100000), 10)
+        self.assertEqual(common.largest_deposit_before(columns, 300000, 100000), (29, 14.5, 1.45))
+        self.assertIsNone(common.largest_deposit_before(columns, 10 ** 7, 100))  # no row in the window
+        del columns["pore[6]"]
+        count, v, length = common.largest_deposit_before(columns, 300000, 100000)
+        self.assertEqual((count, length), (29, 1.45))
+        self.assertTrue(math.isnan(v))
+
+    def test_fits_on_the_largest_deposit_measure_what_they_say(self):
+        """Peaks on P = P_0 + c L exactly for the full deposits, records carrying the slid
+        medians: the fit on the largest deposit returns c, the records' does not."""
+        c, p0, peaks = 0.95, 0.08, (300000, 700000, 1100000)
+        fulls = (12, 21, 33)
+        with tempfile.TemporaryDirectory() as tmp:
+            lengths = [n / 20 for n in fulls]
+            run = write_run(os.path.join(tmp, "run"), p0, [(0.5, 0.05, p0 + c * x) for x in lengths],
+                            deposits=[(3, 0.5, 0.05)] * 3)
+            add_sliding_deposits(run, peaks, fulls, p0)
+            summary = dict(runs=[run], finished=1, study="porelength", size="tiny", core_hours=0.0)
+            largest = common.pressure_fits(summary, lambda r, b: b["deposit_L"], deposit="largest")
+            self.assertAlmostEqual(largest["excess_through_origin"][0], c, places=9)
+            self.assertAlmostEqual(largest["pearson"][0], 1.0, places=9)
+            median = common.pressure_fits(summary, lambda r, b: b["deposit_L"])
+            self.assertTrue(math.isnan(median["pearson"][0]))  # every record says 0.05: no spread
+            from figures import calibration
+            rows = calibration.bursts_with_deposits(run, common.thermo(run["folder"]))
+            self.assertEqual([b["largest"] for b in rows], list(fulls))
+            law = calibration.burst_law(rows, 3.5, [p0] * 3)
+            self.assertAlmostEqual(law["K_largest"][0], c * 3.5, places=9)
+            with self.assertRaises(ValueError):
+                common.pressure_fits(summary, lambda r, b: b["deposit_L"], deposit="mean")
+
+
+class CompactedEvidence(unittest.TestCase):
+    """A study compacted for the repository (compact_study.py) reads back as the study: the
+    same summary, time steps, thermo columns and fits, so that doc/'s figures can be drawn
+    again from the evidence alone."""
+
+    def test_the_compacted_folder_gives_the_study_s_fits(self):
+        import json
+        import compact_study
+        import study_io
+        with tempfile.TemporaryDirectory() as tmp:
+            study = os.path.join(tmp, "study")
+            p0, c = 0.07, 0.9
+            lengths = [0.3, 0.8, 1.5, 2.1]
+            run = write_run(os.path.join(study, "runs", "run0"), p0,
+                            [(x * 9.6, x, p0 + c * x + 0.01 * k) for k, x in enumerate(lengths)],
+                            deposits=[(10 * k, x * 9.6, x) for k, x in enumerate(lengths)])
+            add_sliding_deposits(run, (300000, 700000, 1100000, 1500000), (12, 30, 21, 33), p0)
+            knobs = dict(run["knobs"], cells_per_d="7.1")
+            with open(os.path.join(run["folder"], "knobs.json"), "w") as f:
+                json.dump(knobs, f)
+            with open(os.path.join(study, "summary.txt"), "w") as f:
+                f.write("study porelength (tiny, pool): 1 finished, 0 failed, 0 incomplete of 1\n")
+            evidence = os.path.join(tmp, "evidence")
+            compact_study.compact(study, evidence)
+            self.assertFalse(os.path.exists(os.path.join(evidence, "runs", "run0", "log.liggghts")))
+            summary = study_io.load_summary(evidence)
+            self.assertEqual((summary["study"], summary["size"]), ("porelength", "tiny"))
+            kept, = summary["runs"]
+            self.assertEqual(kept["knobs"], knobs)
+            self.assertEqual(kept["state"], "incomplete")  # write_run's log has no end mark
+            for key, value in study_io.lattice_timing(run["folder"]).items():
+                self.assertAlmostEqual(study_io.lattice_timing(kept["folder"])[key], value, places=5)
+            # The kept rows are the study's (every 10th, and all of a burst's window: 10^5 DEM
+            # steps before the peak to half of that after).
+            original, compacted = common.thermo(run["folder"]), common.thermo(kept["folder"])
+            index = [original["Step"].index(step) for step in compacted["Step"]]
+            for name, values in compacted.items():
+                np.testing.assert_allclose(values, np.asarray(original[name])[index], rtol=1e-7)
+            in_windows = [step for step in original["Step"] if any(-1e5 <= step - p <= 5e4 for p in
+                                                                   (300000, 700000, 1100000, 1500000))]
+            self.assertTrue(set(in_windows) <= set(compacted["Step"]))
+            self.assertLess(len(compacted["Step"]), len(original["Step"]))
+            kept["state"] = "done"
+            full = dict(runs=[dict(run, knobs=knobs)], finished=1, study="porelength", size="tiny", core_hours=0.0)
+            for deposit in ("median", "largest"):
+                a = common.pressure_fits(full, lambda r, b: b["deposit_L"], deposit=deposit)
+                b = common.pressure_fits(summary, lambda r, b: b["deposit_L"], deposit=deposit)
+                for key in ("excess_through_origin", "pearson"):
+                    self.assertTrue(np.isfinite(a[key][0]))
+                    self.assertAlmostEqual(a[key][0], b[key][0], places=6)
+
+
 class BurstLaw(unittest.TestCase):
     """The calibration's check of the paper's law of the bursts, P = K L_dep / D, on bursts
     whose peaks lie exactly on P = P_0 + K L_dep / D: K on P - P_0 is K, through the origin on

@@ -8,8 +8,10 @@ deposits at their peaks; at each peak the wall's hold along the flow against P p
 (burst records); the largest lattice Mach number; the paper's law of the bursts, P = K L_dep
 / D (burst_law), per run and pooled per velocity. A burst's deposit is the median over the
 burst window up to its peak: the record's deposit_count and deposit_L, or, for records
-written before they carried them, the medians over the BEFORE_PEAK fluid steps of thermo rows
-(deposit_before); never the record's count at the peak. The study's default velocity is the
+written before they carried them, the medians over the BURST_WINDOW fluid steps of thermo rows
+(deposit_before); never the record's count at the peak. Beside it, the largest deposit in
+the same window (figures.common.largest_deposit_before), the deposit before it began to
+slide: the law's K and Pearson coefficient on both. The study's default velocity is the
 largest whose bursts carry at least 15 deposited particles at 0.3-0.6 P_out (CRITERION_COUNT,
 CRITERION_P) and whose runs go on to their end.
 
@@ -20,12 +22,10 @@ import re
 import numpy as np
 
 from fit_stats import fmt
-from figures.common import bursts, clean_pressure, plt, result, save, thermo
-from study_io import lattice_timing
+from figures.common import bursts, clean_pressure, largest_deposit_before, plt, result, save, thermo
+from study_io import BURST_WINDOW, burst_window_dem_steps, lattice_timing
 
 CRITERION_COUNT, CRITERION_P = 15, (0.3, 0.6)
-# The fluid steps before a burst's peak over which its deposit is counted (deposit_before).
-BEFORE_PEAK = 1000
 # in.pore's five size templates: radii (in d_particle) and number weights.
 TEMPLATES = ((0.4, 0.054), (0.45, 0.244), (0.5, 0.404), (0.55, 0.244), (0.6, 0.054))
 
@@ -77,17 +77,20 @@ def bursts_with_deposits(run, columns):
     """The run's bursts, each with "deposit" and "deposit_L": the deposit it tore off (count
     and L_dep), its record's deposit_count and deposit_L, or for a record written before
     records carried them, the same medians over the thermo rows (deposit_before; the record's
-    values at its peak where no row lies in the window)."""
-    n_dem = lattice_timing(run["folder"])["n_dem"]
+    values at its peak where no row lies in the window); and "largest", "largest_L": the
+    largest deposit in the window (largest_deposit_before; the median where no row lies in
+    it)."""
+    window = burst_window_dem_steps(run["folder"], run["knobs"])
     rows = bursts(run["folder"])
     for b in rows:
         b["deposit"] = int(b["deposit_count"])
-        if b["deposit_recorded"] or "pore[8]" not in columns:
-            continue
-        count = deposit_before(columns, b["step"], BEFORE_PEAK * n_dem)
-        length = window_median(columns, "pore[8]", b["step"], BEFORE_PEAK * n_dem)
-        if count is not None:
-            b["deposit"], b["deposit_L"] = count, length
+        if not b["deposit_recorded"] and "pore[8]" in columns:
+            count = deposit_before(columns, b["step"], window)
+            length = window_median(columns, "pore[8]", b["step"], window)
+            if count is not None:
+                b["deposit"], b["deposit_L"] = count, length
+        largest = largest_deposit_before(columns, b["step"], window) if "pore[8]" in columns else None
+        b["largest"], b["largest_L"] = (largest[0], largest[2]) if largest else (b["deposit"], b["deposit_L"])
     return rows
 
 
@@ -96,13 +99,23 @@ def burst_law(rows, D, p0):
     run's (or runs') bursts with the deposits they tore off: K through the origin on P - P_0
     (the pressure the deposit adds) and on P, and the Pearson coefficient of P with L_dep / D,
     each (value, low, high) with a 95 % interval over bursts resampled (a study has too few
-    seeds for an interval over runs). rows: bursts_with_deposits rows; p0 per row."""
+    seeds for an interval over runs). rows: bursts_with_deposits rows; p0 per row. Also K
+    and Pearson on the largest deposit in the window (K_largest, pearson_largest) where the
+    rows carry it ("largest_L")."""
     from fit_stats import bootstrap, pearson, slope_through_origin
-    x = [b["deposit_L"] / D for b in rows]
-    points = [([xi], [b["P_peak"]]) for xi, b in zip(x, rows)]
-    excess = [([xi], [b["P_peak"] - p]) for xi, b, p in zip(x, rows, p0) if np.isfinite(p)]
-    return dict(bursts=len(rows), K=bootstrap(excess, slope_through_origin),
-                K_total=bootstrap(points, slope_through_origin), pearson=bootstrap(points, pearson))
+
+    def on(length_key):
+        x = [b[length_key] / D for b in rows]
+        points = [([xi], [b["P_peak"]]) for xi, b in zip(x, rows)]
+        excess = [([xi], [b["P_peak"] - p]) for xi, b, p in zip(x, rows, p0) if np.isfinite(p)]
+        return bootstrap(excess, slope_through_origin), bootstrap(points, slope_through_origin), \
+            bootstrap(points, pearson)
+
+    K, K_total, r = on("deposit_L")
+    law = dict(bursts=len(rows), K=K, K_total=K_total, pearson=r)
+    if rows and all("largest_L" in b for b in rows):
+        law["K_largest"], _, law["pearson_largest"] = on("largest_L")
+    return law
 
 
 def run_row(run):
@@ -166,7 +179,8 @@ def law_table(rows):
     paper's N_DEM and resolution; burst_law), beside the paper's K = 0.91 (0.87-0.95) and
     the Pearson coefficient of its Fig. dropvol, 0.71."""
     lines = ["| u_lattice | runs | bursts | K of P - P_0 = K L_dep / D (95 % over bursts) | K of P through 0 "
-             "| Pearson (P, L_dep) |", "|---|---|---|---|---|---|"]
+             "| Pearson (P, L_dep) | on the largest deposit in the window: K of P - P_0 | Pearson |",
+             "|---|---|---|---|---|---|---|---|"]
     base = [r for r in rows if "burst_rows" in r and variant_label(r["name"]) == VARIANTS[0][1]]
     for u in sorted({r["u"] for r in base}):
         runs = [r for r in base if r["u"] == u]
@@ -175,8 +189,10 @@ def law_table(rows):
             continue
         # burst_law takes one D; the runs of one velocity share the scene, and each row its own P_0.
         law = burst_law(bursts_of, bursts_of[0]["D"], [b["P0"] for b in bursts_of])
+        nan = (np.nan,) * 3
         lines.append(f"| {u:g} | {len(runs)} | {law['bursts']} | {fmt(*law['K'])} | {fmt(*law['K_total'])} "
-                     f"| {fmt(*law['pearson'])} |")
+                     f"| {fmt(*law['pearson'])} | {fmt(*law.get('K_largest', nan))} "
+                     f"| {fmt(*law.get('pearson_largest', nan))} |")
     return "\n".join(lines) if len(lines) > 2 else ""
 
 
@@ -315,9 +331,10 @@ def analyze(summary, out_dir):
     with open(os.path.join(out_dir, "calibration.md"), "w") as f:
         f.write(text + "\n")
         if law:
-            f.write("\nThe paper's law of the bursts, P = K L_dep / D with the deposit each burst tore off, "
-                    "pooled per velocity over the seeds (paper: K = 0.91 +- 0.04; Pearson 0.71 in its "
-                    "Fig. dropvol):\n\n" + law + "\n")
+            f.write("\nThe paper's law of the bursts, P = K L_dep / D with the deposit each burst tore off "
+                    f"(the median over the {BURST_WINDOW} fluid steps before the peak; beside it the largest "
+                    "deposit in that window), pooled per velocity over the seeds (paper: K = 0.91 +- 0.04; "
+                    "Pearson 0.71 in its Fig. dropvol):\n\n" + law + "\n")
         if twins:
             f.write("\nEach run beside its twins (the same run at N_DEM 20 or at 5 cells per d; a 5-cells "
                     "run with one of the model's open points switched), each pair over the time after "

@@ -7,7 +7,8 @@ import numpy as np
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402,F401  (the figure modules draw with it)
 
-from study_io import bursts, finished_runs, lattice_timing, p_out, thermo  # noqa: E402,F401
+from study_io import (burst_window_dem_steps, bursts, finished_runs, lattice_timing, p_out,  # noqa: E402,F401
+                      thermo)
 
 
 def times(run, steps):
@@ -45,6 +46,37 @@ def clean_pressure(run, share=0.25):
     return float(np.mean(rows)) if rows else np.nan
 
 
+def largest_deposit_before(columns, peak_step, window_steps):
+    """The deposit as it stood before it began to slide: (count, V_dep, L_dep) of the thermo
+    row with the largest deposited count (f_pore[7], f_pore[6], f_pore[8]) among those of the
+    `window_steps` DEM steps up to `peak_step`; None without such rows. The burst record's
+    median over the same window loses a deposit that slid out of the count (its particles
+    faster than deposit_speed) for more than half of the window; the paper counts the
+    particles inside the pore radius with no speed bound, so the deposit at its largest is
+    the nearer reading of the paper's V_dep, and the figures give both."""
+    steps = np.asarray(columns.get("Step", []), float)
+    inside = np.flatnonzero((steps >= peak_step - window_steps) & (steps <= peak_step))
+    if not len(inside) or "pore[7]" not in columns:
+        return None
+    k = inside[int(np.argmax(np.asarray(columns["pore[7]"], float)[inside]))]
+    at = [float(columns[c][k]) if c in columns else np.nan for c in ("pore[6]", "pore[8]")]
+    return (int(round(columns["pore[7]"][k])), at[0], at[1])
+
+
+def with_largest_deposits(run, rows, columns=None):
+    """Copies of a run's burst rows whose deposit (deposit_count, deposit_V, deposit_L) is the
+    largest in the window before the peak (largest_deposit_before, from the run's thermo
+    rows); a burst without rows in its window keeps the record's median."""
+    columns = thermo(run["folder"]) if columns is None else columns
+    window = burst_window_dem_steps(run["folder"], run["knobs"])
+    out = []
+    for b in rows:
+        largest = largest_deposit_before(columns, b["step"], window)
+        out.append(b if largest is None else
+                   dict(b, deposit_count=largest[0], deposit_V=largest[1], deposit_L=largest[2]))
+    return out
+
+
 def resampled(groups):
     """(groups, unit) for fit_stats.bootstrap: whole runs, unless a single run has bursts:
     then its bursts one by one (a paper-length run is one run). An interval
@@ -55,17 +87,23 @@ def resampled(groups):
     return [([xi], [yi]) for x, y in groups for xi, yi in zip(x, y)], "bursts"
 
 
-def pressure_fits(summary, x_of):
+def pressure_fits(summary, x_of, deposit="median"):
     """The fits of the peak pressure against x_of(run, burst), the same three for every
     figure so that like is compared with like: the paper's line through the origin on P, the
     same on the pressure the deposit adds, P - P_0 (P_0 = clean_pressure of each run), and a
     line with an intercept on P. Each value (value, low, high) with fit_stats.bootstrap's
     interval over runs (over bursts for a single run: `resampled`); also the Pearson
-    coefficient, the per-run point groups and `unit`, what the intervals resample."""
+    coefficient, the per-run point groups and `unit`, what the intervals resample.
+    deposit: "median", the burst records' deposit (the median over the burst window), or
+    "largest", the largest deposit in that window (with_largest_deposits)."""
     from fit_stats import bootstrap, intercept, pearson, slope, slope_through_origin
+    if deposit not in ("median", "largest"):
+        raise ValueError(f"deposit must be 'median' or 'largest', not {deposit!r}")
     groups, excess = [], []
     for run in finished_runs(summary):
         rows = bursts(run["folder"])
+        if deposit == "largest":
+            rows = with_largest_deposits(run, rows)
         p0 = clean_pressure(run)
         x = [x_of(run, b) for b in rows]
         groups.append((x, [b["P_peak"] for b in rows]))
@@ -87,6 +125,23 @@ def fits_text(fits):
     return (f"through 0: {fmt(*fits['through_origin'])}; P - P_0 through 0: "
             f"{fmt(*fits['excess_through_origin'])}; with intercept: {fmt(*fits['slope'])} "
             f"(intercept {fmt(*fits['intercept'])}){over}")
+
+
+def largest_text(fits):
+    """The fits on the largest deposit in the window before the peak, in one phrase."""
+    from fit_stats import fmt
+    return (f"on the largest deposit in the burst window before the peak: P - P_0 "
+            f"through 0 {fmt(*fits['excess_through_origin'])}, Pearson {fmt(*fits['pearson'])}")
+
+
+def draw_largest(ax, fits):
+    """The bursts at their largest deposit in the window, as hollow markers beside the
+    records' medians."""
+    x = [xi for g in fits["groups"] for xi in g[0]]
+    y = [yi for g in fits["groups"] for yi in g[1]]
+    if x:
+        ax.plot(x, y, "o", ms=5, mfc="none", mec="0.5", mew=0.8,
+                label=f"largest deposit in the window (Pearson {fits['pearson'][0]:.2f})")
 
 
 def draw_fits(ax, fits, top, paper=None, paper_label="paper"):
