@@ -3,7 +3,7 @@
 name (figures/<study>.py), writes <study>/results.json and the plot, prints the row of
 doc/paper.md (paper's value, ours with its 95 % bootstrap interval over runs, run cost).
 
-Usage: analyze.py <study folder> [--figure NAME] [--as-it-stands]
+Usage: analyze.py <study folder> [--figure NAME] [--as-it-stands] [--out DIR]
 (run_study.py calls it after the runs)
 
 --figure analyses the folder's runs as another figure: e.g. the single-burst figure from the
@@ -11,6 +11,8 @@ largest burst among a seed ensemble, `analyze.py studies/dropvol --figure single
 (results in <folder>/<NAME>/).
 --as-it-stands also takes the runs cut short or still under way, with the rows and bursts they
 have so far (a paper-length run built up over several sittings); the results name them.
+--out writes the results and the plot into DIR instead (the study folder is left as it is: a
+study's compacted evidence, compact_study.py, can be analysed again beside it).
 """
 import argparse
 import importlib
@@ -50,13 +52,13 @@ def take_runs_as_they_stand(summary, study_dir):
     return [r["name"] for r in partial]
 
 
-def analyze(study_dir, figure=None, as_it_stands=False):
+def analyze(study_dir, figure=None, as_it_stands=False, out=None):
     summary = load_summary(study_dir)
     partial = take_runs_as_they_stand(summary, study_dir) if as_it_stands else []
-    out_dir = study_dir
+    out_dir = out or study_dir
     if figure is not None and figure != summary["study"]:
-        out_dir = os.path.join(study_dir, figure)
-        os.makedirs(out_dir, exist_ok=True)
+        out_dir = os.path.join(out_dir, figure)
+    os.makedirs(out_dir, exist_ok=True)
     module = importlib.import_module(f"figures.{figure or summary['study']}")
     result = module.analyze(summary, out_dir)
     result["core_hours"] = round(summary["core_hours"], 4)
@@ -79,5 +81,6 @@ if __name__ == "__main__":
     parser.add_argument("study_dir")
     parser.add_argument("--figure")
     parser.add_argument("--as-it-stands", action="store_true")
+    parser.add_argument("--out", help="folder for the results and the plot (default: the study's)")
     args = parser.parse_args()
-    analyze(args.study_dir, args.figure, args.as_it_stands)
+    analyze(args.study_dir, args.figure, args.as_it_stands, args.out)

@@ -328,6 +328,15 @@ class CompactedEvidence(unittest.TestCase):
             self.assertLess(len(compacted["Step"]), len(original["Step"]))
             kept["state"] = "done"
             full = dict(runs=[dict(run, knobs=knobs)], finished=1, study="porelength", size="tiny", core_hours=0.0)
+            # analyze.py on the evidence, its results elsewhere: the evidence stays as it was.
+            import analyze
+            before = sorted(os.listdir(evidence))
+            redrawn = os.path.join(tmp, "redrawn")
+            result = analyze.analyze(evidence, figure="porelength", as_it_stands=True, out=redrawn)
+            self.assertEqual(sorted(os.listdir(evidence)), before)
+            with open(os.path.join(redrawn, "results.json")) as f:  # the study's own figure
+                self.assertEqual(json.load(f)["plot"], "porelength.png")  # no machine path
+            self.assertEqual(result["as_it_stands"], ["run0"])
             for deposit in ("median", "largest"):
                 a = common.pressure_fits(full, lambda r, b: b["deposit_L"], deposit=deposit)
                 b = common.pressure_fits(summary, lambda r, b: b["deposit_L"], deposit=deposit)
