@@ -22,7 +22,7 @@ import re
 import numpy as np
 
 from fit_stats import fmt
-from figures.common import bursts, clean_pressure, largest_deposit_before, plt, result, save, thermo
+from figures.common import bursts, clean_pressure, plt, result, save, thermo, with_largest_deposits
 from study_io import BURST_WINDOW, burst_window_dem_steps, lattice_timing
 
 CRITERION_COUNT, CRITERION_P = 15, (0.3, 0.6)
@@ -78,8 +78,8 @@ def bursts_with_deposits(run, columns):
     and L_dep), its record's deposit_count and deposit_L, or for a record written before
     records carried them, the same medians over the thermo rows (deposit_before; the record's
     values at its peak where no row lies in the window); and "largest", "largest_L": the
-    largest deposit in the window (largest_deposit_before; the median where no row lies in
-    it)."""
+    largest deposit in the window (figures.common.with_largest_deposits; the record's median
+    where no row lies in it)."""
     window = burst_window_dem_steps(run["folder"], run["knobs"])
     rows = bursts(run["folder"])
     for b in rows:
@@ -89,8 +89,8 @@ def bursts_with_deposits(run, columns):
             length = window_median(columns, "pore[8]", b["step"], window)
             if count is not None:
                 b["deposit"], b["deposit_L"] = count, length
-        largest = largest_deposit_before(columns, b["step"], window) if "pore[8]" in columns else None
-        b["largest"], b["largest_L"] = (largest[0], largest[2]) if largest else (b["deposit"], b["deposit_L"])
+    for b, largest in zip(rows, with_largest_deposits(run, rows, columns)):
+        b["largest"], b["largest_L"] = int(largest["deposit_count"]), largest["deposit_L"]
     return rows
 
 
