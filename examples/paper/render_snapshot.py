@@ -5,13 +5,20 @@ through the pore's axis with the particles on it coloured by their drag per mass
 yellow, low to high), beside the pressure loss with the three times marked.
 
 Usage: render_snapshot.py <run folder> [--out collection.png]
+       render_snapshot.py <run folder> --at peak [--out snapshot_peak.png]
+
+With --at peak it draws one snapshot, the clogged pore at the run's highest pressure peak:
+the fluid file nearest the thermo row with the highest P / P_out once particles are in, with
+the particle file of the same step, above the pressure loss with the peak, that frame and all
+VTK frames marked; it says how far the frame lies from the peak and, when P there is more than
+10 % below the peak, that the files are too far apart to catch it.
 
 The run folder is what in.pore writes with vtk_every > 0: fluid_vtk/fluid_<fluid step>.vti
 (.pvti on several ranks), particles_vtk/particles_<DEM step>.vtp (id radius mass x v
 f_pore[1-3]), log.liggghts and bursts.txt. The three times: (1) the last fluid file before the
 first deposit (f_pore[6] still 0), (2) the file nearest the peak of the largest burst, (3) the
 first file after that burst's minimum; a run without a burst takes (2) at its largest P / P_out
-and (3) at its end, and says so in the title.
+with particles in and (3) at its end, and says so in the title.
 
 The files are read and sliced with VTK's Python bindings (Debian's python3-vtk9) and drawn with
 matplotlib's Agg backend. VTK's own render window is not used: Debian builds python3-vtk9 for
@@ -30,6 +37,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.collections import PatchCollection  # noqa: E402
 from matplotlib.patches import Circle  # noqa: E402
+from matplotlib.ticker import MaxNLocator  # noqa: E402
 from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
 from vtkmodules.vtkIOXML import (vtkXMLImageDataReader, vtkXMLPImageDataReader,  # noqa: E402
                                  vtkXMLPolyDataReader)
@@ -79,6 +87,112 @@ def read_particles(path):
     return xyz[:, 0], xyz[:, 1], xyz[:, 2], radius, np.linalg.norm(force, axis=1) / mass
 
 
+def draw_frame(ax, fluid, particles, vmax, dmax):
+    """One snapshot on `ax`: the fluid slice (read_fluid_slice) coloured by speed from 0 to
+    vmax (rainbow), walls in grey, and the particles (read_particles) as circles of their own
+    radius coloured by drag per mass from 0 to dmax (viridis). Returns (the fluid's image, the
+    particles' collection or None)."""
+    speed, solid, spacing, origin = fluid
+    extent = [origin[0] - spacing[0] / 2, origin[0] + (speed.shape[0] - 0.5) * spacing[0],
+              origin[1] - spacing[1] / 2, origin[1] + (speed.shape[1] - 0.5) * spacing[1]]
+    shown = np.ma.masked_where(solid, speed)
+    ax.set_facecolor("0.55")  # walls and particles (solid nodes) in grey
+    image = ax.imshow(shown.T, origin="lower", extent=extent, cmap="rainbow", vmin=0,
+                      vmax=vmax, interpolation="nearest")
+    x, y, _, r, drag = particles
+    circles = None
+    if len(x):
+        circles = PatchCollection([Circle((a, b), c) for a, b, c in zip(x, y, r)],
+                                  cmap="viridis", edgecolor="k", linewidth=0.3)
+        circles.set_array(drag)
+        circles.set_clim(0, dmax)
+        ax.add_collection(circles)
+    ax.set_aspect("equal")
+    return image, circles
+
+
+def particle_file(run_dir, fluid_step, n_dem):
+    """The particle file written with fluid step `fluid_step` (its DEM step in the name)."""
+    return os.path.join(run_dir, "particles_vtk", f"particles_{fluid_step * n_dem}.vtp")
+
+
+def highest_peak(run_dir):
+    """(DEM step, P / P_out) of the thermo row with the highest P / P_out (f_pore[16]) once
+    particles are in the scene (Atoms > 0: the start-up transient of the particle-free flow
+    overshoots and is no peak of a clogged pore); all rows when none has particles."""
+    columns = thermo(run_dir)
+    if "pore[16]" not in columns:
+        sys.exit(f"{run_dir}: no thermo column pore[16] (P / P_out) in the log")
+    rows = list(zip(columns["Step"], columns["pore[16]"], columns.get("Atoms", columns["Step"])))
+    with_particles = [r for r in rows if r[2] > 0 and "Atoms" in columns]
+    step, p, _ = max(with_particles or rows, key=lambda r: r[1])
+    return step, p
+
+
+def render_peak(run_dir, out):
+    """The clogged pore at the run's highest pressure peak: the fluid file nearest to the
+    highest P / P_out once particles are in (highest_peak) and the particle file of the same
+    step, drawn as draw_frame does, above the pressure loss with the peak and the frame
+    marked. Returns dict(frame, peak_step, peak_P, distance, particles, drag_max): the frame
+    and the peak in fluid steps, their distance, the particles drawn and the largest drag per
+    mass among them."""
+    files = fluid_files(run_dir)
+    if not files:
+        sys.exit(f"{run_dir}: no fluid_vtk/fluid_*.vti (run with vtk_every > 0)")
+    n_dem = lattice_timing(run_dir)["n_dem"]
+    peak_dem_step, peak_p = highest_peak(run_dir)
+    peak = peak_dem_step / n_dem
+    frame = min(sorted(files), key=lambda s: abs(s - peak))
+    fluid = read_fluid_slice(files[frame])
+    path = particle_file(run_dir, frame, n_dem)
+    parts = read_particles(path) if os.path.exists(path) else (np.zeros(0),) * 5
+    vmax = float(fluid[0].max()) or 1.0
+    dmax = float(parts[4].max()) if len(parts[4]) else 0.0
+    speed, _, spacing, _ = fluid
+    height = 7.0 * (speed.shape[1] * spacing[1]) / (speed.shape[0] * spacing[0])  # the slice's
+    fig = plt.figure(figsize=(8, height + 3.4))
+    grid = fig.add_gridspec(3, 2, height_ratios=[height, 0.12, 2.0], hspace=0.5, wspace=0.25)
+    ax, trace = fig.add_subplot(grid[0, :]), fig.add_subplot(grid[2, :])
+    image, circles = draw_frame(ax, fluid, parts, vmax, dmax or 1.0)
+    ax.set_xlabel("x (along the flow)")
+    ax.set_ylabel("y")
+    bars = [fig.colorbar(image, cax=fig.add_subplot(grid[1, 0]), orientation="horizontal",
+                         label="fluid speed [cells / fluid step]")]
+    if circles is not None:
+        bars.append(fig.colorbar(circles, cax=fig.add_subplot(grid[1, 1]), orientation="horizontal",
+                                 label="particle drag per mass, |f_pore[1-3]| / m"))
+    for bar in bars:
+        bar.ax.xaxis.set_major_locator(MaxNLocator(4))
+    distance = frame - peak
+    columns = thermo(run_dir)
+    t = np.asarray(columns["Step"]) / n_dem
+    frame_p = columns["pore[16]"][int(np.argmin(np.abs(t - frame)))]  # the nearest thermo row's
+    ax.set_title(f"fluid step {frame}: the VTK frame nearest the highest peak, P = {frame_p:.3g} "
+                 f"P_out, {len(parts[0])} particles\nthe peak: P = {peak_p:.3g} P_out at fluid "
+                 f"step {peak:g} ({distance:+g} fluid steps); fluid: slice through the pore axis",
+                 fontsize=9)
+    trace.plot(t, columns["pore[16]"], "k-", lw=1)
+    trace.plot([peak], [peak_p], "v", color="C3", label="highest peak")
+    trace.axvline(frame, color="C0", ls=":", label="frame shown")
+    trace.plot(sorted(files), [0.0] * len(files), "|", color="C0", ms=8,
+               transform=trace.get_xaxis_transform(), clip_on=False, label="VTK frames")
+    trace.legend(fontsize=8, loc="upper left")
+    trace.set_xlabel("fluid step")
+    trace.set_ylabel("P / P_out")
+    fig.savefig(out, dpi=100, bbox_inches="tight")
+    print(f"wrote {out}: fluid step {frame}, the VTK frame nearest the highest peak "
+          f"(P {peak_p:.4g} P_out at fluid step {peak:g}, {distance:+g} fluid steps away), "
+          f"{len(parts[0])} particles, drag per mass up to {dmax:.3g}")
+    if frame_p < 0.9 * peak_p:
+        spacing = np.diff(sorted(files))
+        print(f"note: the frame misses the peak (P there {frame_p:.4g} P_out, "
+              f"{100 * (1 - frame_p / peak_p):.0f} % below it): the VTK files are "
+              f"{int(spacing.max()) if len(spacing) else 0} fluid steps apart; write them more "
+              f"often (in.pore: -var vtk_every) to catch a peak")
+    return dict(frame=frame, peak_step=peak, peak_P=peak_p, frame_P=frame_p, distance=distance,
+                particles=len(parts[0]), drag_max=dmax)
+
+
 def pick_times(run_dir, steps):
     """The three fluid steps (before, peak, after) among `steps` and a note on how they were
     chosen."""
@@ -102,8 +216,8 @@ def pick_times(run_dir, steps):
         after = min([s for s in steps if s >= after_time] or [steps[-1]])
         note = f"largest burst: P {largest['P_peak']:.3g} -> {largest['P_after']:.3g} P_out"
     else:
-        top = max(rows, key=lambda r: r[2]) if rows else (steps[-1] * timing["n_dem"], 0, 0)
-        peak, after = nearest(fluid_step(top[0])), steps[-1]
+        top = highest_peak(run_dir)[0] if rows else steps[-1] * timing["n_dem"]
+        peak, after = nearest(fluid_step(top)), steps[-1]
         note = "no burst in this run: (2) at its largest P / P_out, (3) at its end"
     return (before, peak, after), note
 
@@ -120,26 +234,12 @@ def render(run_dir, out):
     vmax = max(float(s[0].max()) for s in speeds) or 1.0
     drags = []
     for s in times:
-        path = os.path.join(run_dir, "particles_vtk", f"particles_{s * n_dem}.vtp")
+        path = particle_file(run_dir, s, n_dem)
         drags.append(read_particles(path) if os.path.exists(path) else (np.zeros(0),) * 5)
     dmax = max([float(d[4].max()) for d in drags if len(d[4])] or [1.0]) or 1.0
-    for n, (ax, s, (speed, solid, spacing, origin), parts) in enumerate(
-            zip(axes, times, speeds, drags), start=1):
-        extent = [origin[0] - spacing[0] / 2, origin[0] + (speed.shape[0] - 0.5) * spacing[0],
-                  origin[1] - spacing[1] / 2, origin[1] + (speed.shape[1] - 0.5) * spacing[1]]
-        shown = np.ma.masked_where(solid, speed)
-        ax.set_facecolor("0.55")  # walls and particles (solid nodes) in grey
-        image = ax.imshow(shown.T, origin="lower", extent=extent, cmap="rainbow", vmin=0,
-                          vmax=vmax, interpolation="nearest")
-        x, y, _, r, drag = parts
-        if len(x):
-            circles = PatchCollection([Circle((a, b), c) for a, b, c in zip(x, y, r)],
-                                      cmap="viridis", edgecolor="k", linewidth=0.3)
-            circles.set_array(drag)
-            circles.set_clim(0, dmax)
-            ax.add_collection(circles)
-        ax.set_title(f"({n}) fluid step {s}: {len(x)} particles")
-        ax.set_aspect("equal")
+    for n, (ax, s, fluid, parts) in enumerate(zip(axes, times, speeds, drags), start=1):
+        image, _ = draw_frame(ax, fluid, parts, vmax, dmax)
+        ax.set_title(f"({n}) fluid step {s}: {len(parts[0])} particles")
         fig.colorbar(image, ax=ax, label="fluid speed [cells / fluid step]", shrink=0.8)
     ax = axes[3]
     columns = thermo(run_dir)
@@ -162,9 +262,16 @@ def render(run_dir, out):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("run_dir")
-    parser.add_argument("--out", default="collection.png")
+    parser.add_argument("--out", default=None,
+                        help="the picture (default collection.png, with --at peak snapshot_peak.png)")
+    parser.add_argument("--at", choices=["collection", "peak"], default="collection",
+                        help="collection: before, at the largest burst's peak and after (default); "
+                             "peak: one frame, the one nearest the highest P / P_out")
     args = parser.parse_args()
-    render(args.run_dir, args.out)
+    if args.at == "peak":
+        render_peak(args.run_dir, args.out or "snapshot_peak.png")
+    else:
+        render(args.run_dir, args.out or "collection.png")
 
 
 if __name__ == "__main__":

@@ -1,19 +1,29 @@
 #!/usr/bin/env python3
 """Plot the pressure loss across the pore against time from a LIGGGHTS log, marking the
-erosive bursts: sudden drops of the pressure loss (paper, Figs. 2-3).
+erosive bursts: sudden drops of the pressure loss (paper, Figs. 2-3), with the deposit on its
+own panel below.
 
-Usage: plot_pressure.py log.liggghts [--fix pore] [--out pressure_loss.png] [--drop 0.1] [--window 10]
+Usage: plot_pressure.py log.liggghts [--fix pore] [--bursts bursts.txt] [--out pressure_loss.png]
+                        [--drop 0.1] [--window 10]
 
 The log must contain a thermo block whose header has the columns `Step` and the fix's
-pressure loss, e.g. `thermo_style custom step f_pore[16] f_pore[6] ...` (LIGGGHTS prints the
-header as pore[16], pore[6]); P / P_out (f_ID[16]) is used when present, else f_ID[1]. With the deposited volume f_<ID>[6] in the block as well, it is
-drawn on a second axis (the paper relates the pressure peaks to V_dep). A burst is a fall of
-the pressure loss by more than `--drop` (fraction of the preceding peak, default 10 %) within
-`--window` thermo rows (default 10: 1000 fluid steps in the example), followed to its
-minimum; the rules are those of fix lbm/pore's online detector (find_bursts). Prints each
-burst as `BURST step peak after drop_fraction` and writes the plot.
+pressure loss, e.g. `thermo_style custom step f_pore[16] f_pore[6] f_pore[7] ...` (LIGGGHTS
+prints the header as pore[16], pore[6], ...); P / P_out (f_ID[16]) is used when present, else
+f_ID[1]. The upper panel is the pressure loss against time (DEM step x dt, the paper's fluid
+steps, read from fix lbm/pore's setup line in the log; DEM steps without it) with each burst
+shaded from its peak to its minimum, a triangle on the peak and its number. The lower panel,
+on the same time axis, is the deposit: the deposited particle count f_ID[7] and volume
+V_dep f_ID[6] (the paper relates the pressure peaks to V_dep), when the thermo block has them.
+
+The bursts are those of the fix's burst file with `--bursts` (found every fluid step, with
+the deposit criterion); without it they are found on the thermo rows: a fall of the pressure
+loss by more than `--drop` (fraction of the preceding peak, default 10 %) within `--window`
+thermo rows (default 10: 1000 fluid steps in the example), followed to its minimum, by the
+rules of fix lbm/pore's online detector (find_bursts). Prints each burst as
+`BURST step peak after drop_fraction` and writes the plot.
 """
 import argparse
+import re
 import sys
 
 
@@ -103,7 +113,100 @@ def bursts_from_file(path, steps):
     return rows
 
 
-def main():
+def run_timing(path):
+    """(n_dem, dt_dem) from fix lbm/pore's setup line in the log ("... dt_lbm = 1 (n_dem = 100 x
+    dt_dem = 0.01) ..."), or None for a log without one."""
+    pattern = re.compile(r"dt_lbm = \S+ \(n_dem = (\d+) x dt_dem = (\S+)\)")
+    with open(path, errors="replace") as log:
+        for line in log:
+            m = pattern.search(line)
+            if m:
+                return int(m.group(1)), float(m.group(2))
+    return None
+
+
+def load(log, fix="pore", column=None, bursts=None, drop=0.1, window=10):
+    """What the plot shows, read from the log (and the burst file): a dict with the thermo
+    steps, the pressure loss and its column, the x values (time, or DEM steps without the
+    fix's setup line) and their label, the deposited count and volume (None where the thermo
+    block lacks them) and the bursts as (peak, minimum) row indices."""
+    header, rows = read_thermo(log)
+
+    def find(index):
+        for name in (f"f_{fix}[{index}]", f"{fix}[{index}]"):
+            if name in header:
+                return name
+        return None
+
+    # The pressure loss in units of P_out (f_ID[16], the paper's unit) when the log has it.
+    column = column or find(16) or find(1)
+    if column not in header:
+        sys.exit(f"{log}: no column {column!r} in thermo header {header}")
+    steps = [r[0] for r in rows]
+    pressure = [r[header.index(column)] for r in rows]
+    timing = run_timing(log)
+    if timing:
+        n_dem, dt_dem = timing
+        x = [s * dt_dem for s in steps]
+        x_label = (f"time (the paper's fluid steps: DEM step x {dt_dem:g}; "
+                   f"{n_dem} DEM steps per fluid step)")
+    else:
+        x, x_label = steps, "DEM step"
+    found = bursts_from_file(bursts, steps) if bursts else find_bursts(steps, pressure, drop, window)
+    series = {}
+    for index, name in ((7, "count"), (6, "volume")):
+        c = find(index)
+        series[name] = (c, [r[header.index(c)] for r in rows]) if c else (None, None)
+    unit = "P / P_out" if column == find(16) else "pressure units"
+    return dict(steps=steps, x=x, x_label=x_label, pressure=pressure, column=column, unit=unit,
+                bursts=found, bursts_from_file=bool(bursts), count=series["count"], volume=series["volume"])
+
+
+def figure(data):
+    """The plot: the pressure loss with the bursts marked (a shaded span from each peak to its
+    minimum, a triangle on the peak, its number above it) on the upper panel; the deposited
+    particle count and volume on their own panel below, on the same x axis, the bursts shaded
+    there too."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    x, pressure, bursts = data["x"], data["pressure"], data["bursts"]
+    fig, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=(8, 6),
+                                      gridspec_kw=dict(height_ratios=[2, 1]))
+    top.plot(x, pressure, lw=1.2, color="tab:blue", label="pressure loss")
+    for n, (peak, after) in enumerate(bursts, start=1):
+        for ax in (top, bottom):
+            ax.axvspan(x[peak], x[after], color="tab:red", alpha=0.25, lw=0)
+        top.plot([x[peak]], [pressure[peak]], "v", color="tab:red",
+                 label="erosive burst: peak to minimum" if n == 1 else None)
+        top.annotate(str(n), (x[peak], pressure[peak]), textcoords="offset points",
+                     xytext=(0, 6), ha="center", fontsize=8, color="tab:red")
+    top.set_ylabel(f"pressure loss, {data['unit']}\n({data['column']})")
+    source = "recorded by fix lbm/pore" if data["bursts_from_file"] else "found on the thermo rows"
+    top.set_title(f"{len(bursts)} erosive burst(s) {source}")
+    top.legend(loc="upper left", fontsize=8)
+    (count_column, count), (volume_column, volume) = data["count"], data["volume"]
+    lines = []
+    if count is not None:
+        lines += bottom.plot(x, count, lw=1.0, color="tab:green", drawstyle="steps-post",
+                             label=f"deposited particles ({count_column})")
+        bottom.set_ylabel("deposited particles", color="tab:green")
+    if volume is not None:
+        right = bottom.twinx() if count is not None else bottom
+        lines += right.plot(x, volume, lw=1.0, color="tab:purple", drawstyle="steps-post",
+                            label=f"deposited volume V_dep ({volume_column})")
+        right.set_ylabel("V_dep (d^3 in in.pore)", color="tab:purple")
+    if lines:
+        bottom.legend(lines, [line.get_label() for line in lines], loc="upper left", fontsize=8)
+    else:
+        bottom.text(0.5, 0.5, "no deposit columns (f_ID[6], f_ID[7]) in the thermo block",
+                    transform=bottom.transAxes, ha="center", va="center")
+    bottom.set_xlabel(data["x_label"])
+    fig.tight_layout()
+    return fig
+
+
+def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("log")
     parser.add_argument("--out", default="pressure_loss.png")
@@ -117,55 +220,22 @@ def main():
                         help="the burst file fix lbm/pore wrote (burst_file): mark its bursts, "
                              "found every fluid step with the deposit criterion, instead of "
                              "replaying the rules on the thermo rows")
-    args = parser.parse_args()
-    header, rows = read_thermo(args.log)
-    def find(index):
-        for name in (f"f_{args.fix}[{index}]", f"{args.fix}[{index}]"):
-            if name in header:
-                return name
-        return None
-
-    # The pressure loss in units of P_out (f_ID[16], the paper's unit) when the log has it.
-    column = args.column or find(16) or find(1)
-    if column not in header:
-        sys.exit(f"{args.log}: no column {column!r} in thermo header {header}")
-    c = header.index(column)
-    steps = [r[0] for r in rows]
-    pressure = [r[c] for r in rows]
-    if args.bursts:
-        bursts = bursts_from_file(args.bursts, steps)
-    else:
-        bursts = find_bursts(steps, pressure, args.drop, args.window)
-    deposit_column = find(6)
-    deposits = [r[header.index(deposit_column)] for r in rows] if deposit_column else None
-    for peak, after in bursts:
+    args = parser.parse_args(argv)
+    data = load(args.log, args.fix, args.column, args.bursts, args.drop, args.window)
+    steps, pressure = data["steps"], data["pressure"]
+    for peak, after in data["bursts"]:
         print(f"BURST step {steps[peak]:.0f} peak {pressure[peak]:.6g} after {pressure[after]:.6g} "
               f"drop {1 - pressure[after] / pressure[peak]:.3f}")
-    print(f"{len(bursts)} burst(s) in {len(rows)} thermo rows")
+    print(f"{len(data['bursts'])} burst(s) in {len(steps)} thermo rows")
     try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
+        import matplotlib  # noqa: F401
     except ImportError:
         print("matplotlib not installed (apt-get install python3-matplotlib): no plot")
-        return
-    fig, ax = plt.subplots(figsize=(7, 4))
-    ax.plot(steps, pressure, lw=1.2, label="pressure loss")
-    for peak, after in bursts:
-        ax.axvspan(steps[peak], steps[after], color="tab:red", alpha=0.25)
-        ax.plot([steps[peak]], [pressure[peak]], "v", color="tab:red")
-    if deposits:
-        ax2 = ax.twinx()
-        ax2.plot(steps, deposits, lw=1.0, color="tab:green", label="deposited volume")
-        ax2.set_ylabel(f"deposited volume V_dep ({deposit_column})", color="tab:green")
-    ax.set_xlabel("DEM step")
-    unit = "P / P_out" if column == find(16) else "pressure units"
-    ax.set_ylabel(f"pressure loss, {unit} ({column})")
-    ax.set_title(f"{len(bursts)} erosive burst(s) marked")
-    ax.legend()
-    fig.tight_layout()
+        return None
+    fig = figure(data)
     fig.savefig(args.out, dpi=120)
     print(f"wrote {args.out}")
+    return fig
 
 
 if __name__ == "__main__":
