@@ -4,6 +4,7 @@
     tools/update_performance.py                      # every benchmark (about 20 minutes on 2 cores)
     tools/update_performance.py bench_lbm bench_coupled       # only these
     tools/update_performance.py --build-dir build-native bench_lbm
+    build/tests/bench/lbm/bench_lbm | tools/update_performance.py --from-log - bench_lbm
 
 Each benchmark (a CMake target `bench_<what>`, tests/bench/) prints `BENCH <name> <value>
 <unit> [note]` lines. The script configures ./build if it is not configured yet (Release),
@@ -14,11 +15,13 @@ the block between
 
     <!-- performance:<benchmark>:begin ... -->   and   <!-- performance:<benchmark>:end -->
 
-with the command, the date, the machine and one row per figure. Figures the run did not print
-(Palabos not found, one core only, no single-precision driver) keep a row with "—". Nothing
-outside the markers changes. Run it on an otherwise idle machine: the figures are timings.
+with the command, the date, the machine and one row per figure: every table holds one run of
+one benchmark on one machine. Figures the run did not print (Palabos not found, one core
+only, no baseline) keep a row with "—". Nothing outside the markers changes. Run it on an
+otherwise idle machine: the figures are timings.
 
-To record the BENCH lines of a run made elsewhere (the same format, e.g. a saved log):
+To record the BENCH lines of one run already made (the same format: a saved log, or `-` for
+standard input); --machine and --date describe a run made on another machine or day:
 
     tools/update_performance.py --from-log run.txt --machine "2-core ... guest, GCC 12.2, Release" \\
         --date 2026-12-02 bench_lbm
@@ -79,7 +82,9 @@ def paper_run_figures():
         figures += [(f"{name}_particles", "count"), (f"{name}_deposited", "count")]
         figures += [(f"{name}_fluid_step_ms{m}", "ms") for m in ("", "_min", "_max")]
         figures += [(f"{name}_{part}_ms", "ms") for part in parts]
-        figures += [(f"{name}_links_per_step", "count"), (f"{name}_ns_per_link", "ns"), (f"{name}_coupling_fluid_cell_updates_per_link", "ratio")]
+        figures += [(f"{name}_links_per_step", "count"), (f"{name}_ns_per_link", "ns"),
+                    (f"{name}_links_busiest_rank_vs_mean", "ratio"), (f"{name}_coupling_busiest_rank_vs_mean", "ratio"),
+                    (f"{name}_coupling_fluid_cell_updates_per_link", "ratio")]
         figures += [(f"{name}_projected_hours{m}", "hours") for m in ("", "_min", "_max")]
         figures += [(f"{name}_projected_hours{v}", "hours")
                     for v in ("_n_dem_20", "_5_cells_per_d", "_5_cells_per_d_n_dem_20")]
@@ -253,7 +258,8 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("benchmarks", nargs="*", help=f"default: all of {', '.join(BENCHMARKS)}")
     parser.add_argument("--build-dir", default=os.path.join(ROOT, "build"))
-    parser.add_argument("--from-log", help="take the BENCH lines from this file instead of running")
+    parser.add_argument("--from-log", help="take the BENCH lines from this file ('-': standard input) "
+                                           "instead of running")
     parser.add_argument("--machine", help="machine description (default: read from this machine)")
     parser.add_argument("--date", help="date of the measurement (default: today, UTC)")
     parser.add_argument("--dry-run", action="store_true", help="print the blocks, do not write the page")
@@ -265,7 +271,9 @@ def main():
     build_dir = os.path.abspath(args.build_dir)
     if args.from_log and len(names) != 1:
         sys.exit("update_performance: --from-log takes the lines of one benchmark; name it")
-    if args.from_log:
+    if args.from_log == "-":
+        logged = sys.stdin.read()
+    elif args.from_log:
         with open(args.from_log) as f:
             logged = f.read()
     elif not os.path.exists(os.path.join(build_dir, "CMakeCache.txt")):
