@@ -190,15 +190,7 @@ void FixLbmPore::build_lattice(std::unique_ptr<coupling::UnitConversion> units) 
       throw lbm::InputError(std::string("restart: ") + e.what());
     }
   }
-  if (comm->me == 0 && !options_.burst_file.empty()) {
-    try {
-      monitor_->write_bursts_to(options_.burst_file, lbm_pore::burst_units(update->unit_style),
-                                /*append=*/!restored_state_.empty());
-    } catch (const std::runtime_error& e) {  // rank 0 only: stop from here
-      lbm_pore::stop_on_this_rank(error, comm->me, screen, logfile,
-                                  (std::string("fix lbm/pore: burst_file: ") + e.what()).c_str());
-    }
-  }
+  open_monitor_files();
   if (options_.vtk_every > 0)
     vtk_ = std::make_unique<lbm::VtkSeriesWriter>(options_.vtk_directory, "fluid");
 }

@@ -92,6 +92,7 @@ class FixLbmPore : public Fix {
   void collect_group_pairs();
   void find_walls();
   void record_particles();
+  void open_monitor_files();
   void record_fluid_step();
   void check_fluid_state();
   void check_particle_speed();

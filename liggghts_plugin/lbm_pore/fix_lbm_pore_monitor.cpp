@@ -11,6 +11,7 @@
 #include "fix_lbm_pore.h"
 #include "lbm/fluid_solver.h"
 #include "modify.h"
+#include "pore_scene_setup.h"
 #include "plugin_common/stop_run.h"
 #include "plugin_common/stop_signals.h"
 #include "update.h"
@@ -58,6 +59,25 @@ void FixLbmPore::record_particles() {
     if (wall && dim == 1) loads.wall_force += wall[0];
   }
   monitor_->record_particles(particles_.view(), bonded_, on_wall_, loads, solver_->decomposition().comm);
+}
+
+// The monitor's files: the bursts (rank 0 writes) and the deposit region's speeds (every rank
+// counts, rank 0 writes); a resumed run appends to both. A file that cannot be opened stops
+// the run from rank 0, naming the keyword.
+void FixLbmPore::open_monitor_files() {
+  const bool resumed = !restored_state_.empty();
+  const char* keyword = "burst_file";
+  try {
+    if (comm->me == 0 && !options_.burst_file.empty())
+      monitor_->write_bursts_to(options_.burst_file, lbm_pore::burst_units(update->unit_style), resumed);
+    keyword = "deposit_speeds";
+    if (options_.deposit_speeds_every > 0)
+      monitor_->write_deposit_speeds_to(comm->me == 0 ? options_.deposit_speeds_file : "",
+                                        options_.deposit_speeds_every, 1.0 / options_.dx, resumed);
+  } catch (const std::runtime_error& e) {  // rank 0 only: stop from here
+    lbm_pore::stop_on_this_rank(error, comm->me, screen, logfile,
+                                (std::string("fix lbm/pore: ") + keyword + ": " + e.what()).c_str());
+  }
 }
 
 // The pressure loss in units of P_out and the burst detector, after every fluid step; a

@@ -194,6 +194,9 @@ PoreOptions parse_pore_options(const std::vector<std::string>& args) {
       o.burst_deposits = words.integer(key, 0, 1000000000);
     } else if (key == "burst_file") {
       o.burst_file = words.text(key);
+    } else if (key == "deposit_speeds") {
+      o.deposit_speeds_every = words.integer(key, 1, 1000000000);
+      o.deposit_speeds_file = words.text("deposit_speeds (file)");
     } else if (key == "vtk") {
       o.vtk_every = words.integer(key, 0, 1000000000);
       o.vtk_directory = words.text("vtk (directory)");
@@ -216,7 +219,7 @@ PoreOptions parse_pore_options(const std::vector<std::string>& args) {
 const char* pore_options_usage() {
   return "dx, rho, nu, n_dem, magic, scene (pore|voxels), origin, lateral, velocity, "
          "pressure_loss, boundary, mass_correction, reference_pressure, substep_force, rotation, lubrication, lubrication_cutoff, deposit_region, deposit_speed, burst_drop, "
-         "burst_window, burst_deposits, burst_file, vtk, "
+         "burst_window, burst_deposits, burst_file, deposit_speeds, vtk, "
          "checkpoint, checkpoint_keep";
 }
 

@@ -54,6 +54,11 @@ struct PoreOptions {
   double burst_window = -1.0;
   std::string burst_file;
   int burst_deposits = 1;  // deposited particles a peak needs for its fall to be erosive
+  // Speeds of the particles in the deposit region (coupling/diagnostics/deposit_speeds.h),
+  // summed over each interval of deposit_speeds_every fluid steps into deposit_speeds_file
+  // (0 / "": not counted).
+  int deposit_speeds_every = 0;
+  std::string deposit_speeds_file;
   // Output.
   int vtk_every = 0;
   std::string vtk_directory = "lbm_vtk";

@@ -41,7 +41,9 @@ TEST(PoreOptions, AllKeywords) {
       split("dx 1 rho 2 nu 0.1 n_dem 50 magic 0.25 scene voxels g.raw origin 0 1 2 lateral wall "
             "pressure_loss 0.02 boundary bouzidi mass_correction no lubrication no lubrication_cutoff 0.5 "
             "deposit_speed 0.001 vtk 10 out checkpoint ck reference_pressure keep checkpoint_keep 2 deposit_region pore "
-            "substep_force fraction"));
+            "substep_force fraction deposit_speeds 500 speeds.txt"));
+  EXPECT_EQ(o.deposit_speeds_every, 500);
+  EXPECT_EQ(o.deposit_speeds_file, "speeds.txt");
   EXPECT_EQ(o.voxel_file, "g.raw");
   EXPECT_FALSE(o.lateral_periodic);
   EXPECT_EQ(o.drive, lbm_pore::PoreOptions::Drive::kPressureLoss);
@@ -71,6 +73,8 @@ TEST(PoreOptions, BadValuesNameTheKeywordAndRange) {
   EXPECT_NE(error_of("dx 1 substep_force half" + kScene).find("'substep_force' = 'half': must be 'held' or 'fraction'"),
             std::string::npos);
   EXPECT_NE(error_of("dx 1 deposit_region inlet" + kScene).find("'deposit_region' = 'inlet': must be 'from_inlet' or 'pore'"),
+            std::string::npos);
+  EXPECT_NE(error_of("dx 1 deposit_speeds 0 s.txt" + kScene).find("'deposit_speeds' = '0': must be an integer in [1,"),
             std::string::npos);
   EXPECT_NE(error_of("dx 1 checkpoint_keep -1" + kScene).find("'checkpoint_keep' = '-1': must be an integer in [0,"),
             std::string::npos);

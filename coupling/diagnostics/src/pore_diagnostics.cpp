@@ -1,5 +1,6 @@
 #include "coupling/diagnostics/pore_diagnostics.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "lbm/d3q19.h"
@@ -11,30 +12,39 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 }
 
+bool in_pore_region(const Vec3& x, const PoreRegion& pore) {
+  const int a = pore.axis, b = (a + 1) % 3, c = (a + 2) % 3;
+  const int lo = std::min(b, c), hi = std::max(b, c);
+  if (x[a] < pore.start || x[a] > pore.end) return false;
+  const double d0 = x[lo] - pore.centre[0], d1 = x[hi] - pore.centre[1];
+  return d0 * d0 + d1 * d1 <= 0.25 * pore.diameter * pore.diameter;
+}
+
 Deposition deposited(const ParticleView& view, const std::vector<char>& bonded, const PoreRegion& pore,
                      const DepositionCriteria& criteria, const lbm::Communicator& comm,
                      const std::vector<char>* on_wall) {
-  double sums[3] = {0.0, 0.0, 0.0};
-  const int a = pore.axis, b = (a + 1) % 3, c = (a + 2) % 3;
-  const int lo = std::min(b, c), hi = std::max(b, c);
+  constexpr std::size_t kLadder = kDepositSpeedLadder.size();
+  // volume, count, on the wall, then the count under each scaled threshold: one reduction.
+  std::array<double, 3 + kLadder> sums{};
   for (std::size_t p = 0; p < view.num_owned; ++p) {
     if (p >= bonded.size() || !bonded[p]) continue;
+    if (!in_pore_region(view.x(p), pore)) continue;
     const Vec3 v = view.v(p);
-    if (std::sqrt(dot(v, v)) >= criteria.speed_threshold) continue;
-    const Vec3 x = view.x(p);
-    if (x[a] < pore.start || x[a] > pore.end) continue;
-    const double d0 = x[lo] - pore.centre[0], d1 = x[hi] - pore.centre[1];
-    if (d0 * d0 + d1 * d1 > 0.25 * pore.diameter * pore.diameter) continue;
+    const double speed = std::sqrt(dot(v, v));
+    for (std::size_t i = 0; i < kLadder; ++i)
+      if (speed < kDepositSpeedLadder[i] * criteria.speed_threshold) sums[3 + i] += 1.0;
+    if (speed >= criteria.speed_threshold) continue;
     const double R = view.r(p);
     sums[0] += 4.0 / 3.0 * kPi * R * R * R;
     sums[1] += 1.0;
     if (on_wall && p < on_wall->size() && (*on_wall)[p]) sums[2] += 1.0;
   }
-  comm.sum(sums, 3);
+  comm.sum(sums.data(), int(sums.size()));
   Deposition d;
   d.volume = sums[0];
   d.count = (long long)std::llround(sums[1]);
   d.on_wall = (long long)std::llround(sums[2]);
+  for (std::size_t i = 0; i < kLadder; ++i) d.count_at_scaled_threshold[i] = (long long)std::llround(sums[3 + i]);
   d.length = pore.diameter > 0.0 ? d.volume / (kPi * pore.diameter * pore.diameter / 4.0) : 0.0;
   return d;
 }

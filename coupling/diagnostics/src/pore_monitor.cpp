@@ -22,6 +22,8 @@ PoreMonitorSetup pore_scene_monitor(const lbm::PoreSceneSpec& spec, DepositRegio
   s.inlet_plane = r.inlet_end - 0.5;
   s.outlet_plane = r.outlet_begin - 0.5;
   s.flow_length = r.outlet_end;
+  s.upstream_plane = r.pore_begin - 1;
+  s.downstream_plane = r.pore_end;
   return s;
 }
 
@@ -56,6 +58,9 @@ void PoreMonitor::record_particles(const ParticleView& view, const std::vector<c
   const auto deposit = deposited(view, bonded, setup_.pore, setup_.criteria, comm, &on_wall);
   values_[kDepositedOnWall] = double(deposit.on_wall);
   auto& v = values_;
+  for (std::size_t i = 0; i < kDepositSpeedLadder.size(); ++i)
+    v[kDepositedCountScaledSpeed + i] = double(deposit.count_at_scaled_threshold[i]);
+  if (speed_every_ > 0) speeds_.add(view, bonded, on_wall, setup_.pore);
   v[kDepositedVolume] = deposit.volume * volume_unit;
   v[kDepositedCount] = double(deposit.count);
   // L_dep = V_dep / (pi D^2 / 4) with the pore's diameter (the equivalent one for a voxel file);
@@ -96,6 +101,11 @@ void PoreMonitor::update_fluid(const lbm::FluidSolver& solver, long long fluid_s
   v[kFluidSteps] = double(fluid_steps);
   v[kFluidMassHeld] = totals.mass / solver.parameters().rho0 * fluid_mass_unit();
   v[kParticleDisplacedMass] = double(totals.moving_nodes) * fluid_mass_unit();
+  v[kPressureLossAcrossPore] = 0.0;
+  if (setup_.upstream_plane >= 0 && setup_.downstream_plane >= 0)
+    v[kPressureLossAcrossPore] = (lbm::plane_mean_pressure(solver, setup_.pore.axis, setup_.upstream_plane) -
+                                  lbm::plane_mean_pressure(solver, setup_.pore.axis, setup_.downstream_plane)) /
+                                 outlet_pressure(solver);
 }
 
 // Host mass of one lattice cell of fluid at the reference density.
@@ -151,7 +161,25 @@ std::optional<BurstRecord> PoreMonitor::record_fluid_step(const lbm::FluidSolver
   if (burst) bursts_.push_back(*burst);
   values_[kBurstCount] = double(bursts_.size());
   if (burst && burst_file_) burst_file_->write(*burst);
+  if (speed_every_ > 0) take_deposit_speeds(solver, fluid_step);
   return burst;
+}
+
+void PoreMonitor::write_deposit_speeds_to(const std::string& path, long long every, double cells_per_unit_length,
+                                          bool append) {
+  speed_every_ = every;
+  speed_first_step_ = -1;
+  if (!path.empty()) speed_file_ = std::make_unique<DepositSpeedFileWriter>(path, cells_per_unit_length, append);
+}
+
+// At the end of each interval of speed_every_ fluid steps (counted from fluid step 0, so a
+// resumed run keeps the intervals of an uninterrupted one; its first may be shorter).
+void PoreMonitor::take_deposit_speeds(const lbm::FluidSolver& solver, long long fluid_step) {
+  if (speed_first_step_ < 0) speed_first_step_ = fluid_step;
+  if (fluid_step % speed_every_ != 0) return;
+  const std::vector<double> counts = speeds_.take(solver.decomposition().comm);
+  if (speed_file_) speed_file_->write(speed_first_step_, fluid_step, counts);
+  speed_first_step_ = -1;
 }
 
 void PoreMonitor::write_bursts_to(const std::string& path, const BurstUnits& units, bool append) {
@@ -175,8 +203,13 @@ std::vector<double> PoreMonitor::state() const {
 void PoreMonitor::restore(const std::vector<double>& state) {
   // Restart files written before the wall's hold was recorded hold the first
   // kWallForceX values; the hold then starts at 0 and is recorded from the next fluid step.
+  // Files written before the pressure across the pore and the threshold ladder were recorded
+  // hold the first kPressureLossAcrossPore; those start at 0 and are recorded from the next
+  // fluid step.
   const std::size_t count = state.empty() ? 0 : std::size_t(state[0]);
-  if ((count != std::size_t(kCount) && count != std::size_t(kWallForceX)) || state.size() < count + 2)
+  const bool known = count == std::size_t(kCount) || count == std::size_t(kPressureLossAcrossPore) ||
+                     count == std::size_t(kWallForceX);
+  if (!known || state.size() < count + 2)
     throw std::invalid_argument(
         "pore monitor: the restart file holds another set of diagnostics (written by another "
         "version of lbm-pore, " +

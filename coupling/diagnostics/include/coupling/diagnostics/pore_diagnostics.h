@@ -1,6 +1,7 @@
 #pragma once
 // Diagnostics of the paper's clogging runs (Sec. III): pressure loss, deposited volume and
 // length, particle and fluid flux through planes.
+#include <array>
 #include <unordered_map>
 #include <vector>
 
@@ -39,12 +40,23 @@ struct DepositionCriteria {
   double speed_threshold = 1e-4;
 };
 
+// The deposit's sensitivity to its speed threshold: the same count with the threshold
+// scaled by each of these factors (quartered to multiplied by 16), so one run shows how the
+// count at a peak, and the law fitted to the bursts, move with the threshold.
+constexpr std::array<double, 6> kDepositSpeedLadder{0.25, 0.5, 2.0, 4.0, 8.0, 16.0};
+
 struct Deposition {
   double volume = 0.0;
   double length = 0.0;
   long long count = 0;
   long long on_wall = 0;  // of them, those the caller flags as touching the pore wall
+  // Deposited counts under the threshold times kDepositSpeedLadder[i] (bonded, in the region).
+  std::array<long long, kDepositSpeedLadder.size()> count_at_scaled_threshold{};
 };
+
+// Whether a lattice point lies in the deposit region: start <= x_axis <= end and within D/2
+// of the centre line.
+bool in_pore_region(const Vec3& x, const PoreRegion& pore);
 
 // on_wall (indexed like the view, may be null): which particles touch the wall (within the
 // adhesion range), to count the deposited ones that hold on to it directly.

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "coupling/diagnostics/burst_detector.h"
+#include "coupling/diagnostics/deposit_speeds.h"
 #include "coupling/diagnostics/pore_diagnostics.h"
 #include "coupling/particle_view.h"
 #include "coupling/unit_conversion.h"
@@ -24,6 +25,10 @@ struct PoreMonitorSetup {
   double inlet_plane = 0.0;     // x of the planes whose particle crossings are counted
   double outlet_plane = 0.0;
   int flow_length = 0;          // nodes along the flow axis (the counters' wrap-around test)
+  // The planes "on both sides of the pore" (paper Sec. III) whose pressure difference is the
+  // pressure loss across the pore: the last node plane before it and the first after it
+  // (node indices along the axis; -1 where the geometry has no such pore).
+  int upstream_plane = -1, downstream_plane = -1;
   DepositionCriteria criteria;  // speed threshold of a deposit (lattice units)
   BurstCriteria bursts;         // what counts as an erosive burst (window in fluid steps)
   // An erosive burst tears a deposit off: a fall whose peak had fewer deposited particles
@@ -86,7 +91,14 @@ class PoreMonitor {
     // that touch the wall.
     kWallForceX,
     kDepositedOnWall,
-    kCount
+    // The pressure loss across the pore, between the planes next to its ends, P / P_out
+    // (0 without such planes). The paper measures it there; kPressureLossOutlet is read at
+    // the box's open faces and includes the regions before and after the pore.
+    kPressureLossAcrossPore,
+    // The deposited count under the speed threshold scaled by kDepositSpeedLadder[i], one
+    // quantity per factor in that order (x 1/4, 1/2, 2, 4, 8, 16).
+    kDepositedCountScaledSpeed,
+    kCount = kDepositedCountScaledSpeed + int(kDepositSpeedLadder.size())
   };
 
   PoreMonitor(const PoreMonitorSetup& setup, const UnitConversion& units);
@@ -129,6 +141,11 @@ class PoreMonitor {
   // to it when the run was resumed from a restart. Throws std::runtime_error naming the file
   // when it cannot be opened.
   void write_bursts_to(const std::string& path, const BurstUnits& units, bool append);
+  // Every rank: count the speeds of the particles in the deposit region (DepositSpeedHistogram)
+  // and sum them over the ranks every `every` fluid steps. Rank 0 may then write each
+  // interval's counts to `path` ("" on the others: counted, not written), appending when the
+  // run was resumed. Throws std::runtime_error naming the file when it cannot be opened.
+  void write_deposit_speeds_to(const std::string& path, long long every, double cells_per_unit_length, bool append);
 
   const std::vector<double>& values() const { return values_; }
   // Everything a restart needs (the number of values, the values, with the cumulative
@@ -154,6 +171,11 @@ class PoreMonitor {
   double coupling_mass_[2] = {0.0, 0.0};  // this rank's, since the last fluid step recorded
   long long last_burst_sample_ = -1;  // the fluid step last fed to the detector
   std::unique_ptr<BurstFileWriter> burst_file_;
+  DepositSpeedHistogram speeds_;
+  std::unique_ptr<DepositSpeedFileWriter> speed_file_;
+  long long speed_every_ = 0;         // fluid steps per interval; 0: not counted
+  long long speed_first_step_ = -1;   // the interval's first fluid step (-1: none yet)
+  void take_deposit_speeds(const lbm::FluidSolver& solver, long long fluid_step);
 };
 
 }  // namespace coupling
