@@ -10,7 +10,6 @@
 #include "lbm/halo_exchange.h"
 #include "lbm/input_error.h"
 #include "lbm/macroscopic.h"
-#include "lbm/moving_wall/moment_cache.h"
 #include "lbm/open_boundary.h"
 #include "plane_nodes.h"
 
@@ -186,32 +185,17 @@ void FluidSolver::exchange_ghost_densities(std::vector<double>& ghost_density) {
   halo_->exchange_scalar(ghost_density);
 }
 
-// The owned planes' moments, then the scalar sweeps along the marked axes carry them as
-// exchange_halo() would carry the populations they come from (exchange_ghost_densities).
-void FluidSolver::exchange_ghost_moments(const std::array<bool, 3>& axes,
-                                         moving_wall::GhostMoments& ghosts,
-                                         const std::vector<std::size_t>* sent,
-                                         const std::vector<std::size_t>* received) {
-  auto& c = ghosts.component;
-  for (auto& component : c) component.resize(layout_.num_cells());
-  const auto compute = [&](const std::vector<std::size_t>& cells) {
-    for (const std::size_t cell : cells) {
-      const NodeMoments m = node_moments(f_, cell, parameters_.body_force);
-      c[0][cell] = m.rho;
-      for (int b = 0; b < 3; ++b) c[1 + b][cell] = m.u[b];
-    }
-  };
-  ghosts.cells.clear();
-  for (int a = 0; a < 3; ++a) {
-    if (!axes[a]) continue;
-    if (!sent) compute(halo_->sent_planes(a));
-    if (!received) ghosts.cells.insert(ghosts.cells.end(), halo_->ghost_planes(a).begin(),
-                                       halo_->ghost_planes(a).end());
-  }
-  if (sent) compute(*sent);
-  if (received) ghosts.cells.assign(received->begin(), received->end());
-  double* fields[4] = {c[0].data(), c[1].data(), c[2].data(), c[3].data()};
-  halo_->exchange_scalars(fields, 4, axes);
+const std::vector<std::size_t>& FluidSolver::halo_sent_planes(int axis) const {
+  return halo_->sent_planes(axis);
+}
+
+const std::vector<std::size_t>& FluidSolver::halo_ghost_planes(int axis) const {
+  return halo_->ghost_planes(axis);
+}
+
+void FluidSolver::exchange_ghost_fields(double* const* fields, int count,
+                                        const std::array<bool, 3>& axes) {
+  halo_->exchange_scalars(fields, count, axes);
 }
 
 bool FluidSolver::is_exchanged_ghost(std::size_t cell) const {

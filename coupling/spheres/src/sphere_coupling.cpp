@@ -66,10 +66,10 @@ void SphereCoupling::exchange_halo() {
   ghost_moments_fresh_ = ghost_moment_axes_[0] || ghost_moment_axes_[1] || ghost_moment_axes_[2];
   if (!ghost_moments_fresh_) return;
   if (ghost_moments_near_spheres_)
-    solver_.exchange_ghost_moments(ghost_moment_axes_, ghost_moments_, &ghost_moment_cells_.sent,
-                                   &ghost_moment_cells_.received);
+    lbm::moving_wall::exchange_ghost_moments(solver_, ghost_moment_axes_, ghost_moments_,
+                                             &ghost_moment_cells_.sent, &ghost_moment_cells_.received);
   else
-    solver_.exchange_ghost_moments(ghost_moment_axes_, ghost_moments_);
+    lbm::moving_wall::exchange_ghost_moments(solver_, ghost_moment_axes_, ghost_moments_);
 }
 
 void SphereCoupling::set_particle_reach(double view_reach, double radius_bound) {

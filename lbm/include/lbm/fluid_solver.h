@@ -19,9 +19,6 @@
 namespace lbm {
 
 class HaloExchange;
-namespace moving_wall {
-struct GhostMoments;
-}
 
 struct FluidParameters {
   double tau = 1.0;                 // relaxation time (lattice units); nu = (tau - 1/2)/3
@@ -83,18 +80,18 @@ class FluidSolver {
   // while one value per cell travels instead of 19 populations; the populations stay as
   // they are. Other cells of `ghost_density` hold nothing of use. Collective.
   void exchange_ghost_densities(std::vector<double>& ghost_density);
-  // The moments (node_moments, with the body force) that exchange_halo() with all 19
-  // populations along the axes marked in `axes` would let a reader compute at the ghosts of
-  // those axes, into `ghosts` (components sized num_cells() on first use), while four values
-  // per cell travel instead of 19 populations. Only the ghosts of a marked axis are filled
-  // (edge ghosts when both their axes are marked, as the population exchange fills them).
-  // `sent`: the cells of the sent planes whose moments are computed (every cell of those
-  // planes when null; a ghost then holds its owner's moments where the owner computed them);
-  // `ghosts.cells` is set to `received`, the ghosts the reader will read (every cell of the
-  // filled planes when null). Collective; every rank must pass the same `axes`.
-  void exchange_ghost_moments(const std::array<bool, 3>& axes, moving_wall::GhostMoments& ghosts,
-                              const std::vector<std::size_t>* sent = nullptr,
-                              const std::vector<std::size_t>* received = nullptr);
+  // The cells of the padded planes that exchange_halo() sends along `axis`, and the ghosts
+  // it fills there (HaloExchange::sent_planes, ghost_planes), for a host that carries values
+  // of its own along the same paths (exchange_ghost_fields).
+  const std::vector<std::size_t>& halo_sent_planes(int axis) const;
+  const std::vector<std::size_t>& halo_ghost_planes(int axis) const;
+  // `count` fields of num_cells() doubles each, carried to the ghosts along the axes marked
+  // in `axes` as exchange_halo() carries the populations (HaloExchange::exchange_scalars):
+  // a field that holds g(populations) on the sent planes of those axes holds, at their
+  // ghosts, the g of the populations that exchange_halo() with all 19 along them would have
+  // put there (edge ghosts when both their axes are marked). The ghosts of the other axes
+  // keep what they held. Collective; every rank must pass the same `count` and `axes`.
+  void exchange_ghost_fields(double* const* fields, int count, const std::array<bool, 3>& axes);
   // Whether `cell` is a ghost that exchange_halo() fills (HaloExchange::is_exchanged_ghost).
   bool is_exchanged_ghost(std::size_t cell) const;
   void apply_wall_bounce_back();

@@ -26,8 +26,8 @@ namespace lbm {
 // all 19. FluidSolver::step() sends the five on every axis; so does the sphere coupling,
 // and on the axes where Mei-Luo-Shyy may read a whole ghost node (coupling/boundary/
 // whole_ghost_axes.h, decided by all ranks together) it sends that node's moments, the only
-// thing the scheme reads of it, four values per cell (FluidSolver::exchange_ghost_moments,
-// sent_planes(), exchange_scalars()). The refill, which reads only ghost
+// thing the scheme reads of it, four values per cell (computed on sent_planes(), carried by
+// exchange_scalars() through FluidSolver::exchange_ghost_fields). The refill, which reads only ghost
 // densities, gets them with one value per cell (sent_cells(), exchange_scalar()).
 //
 // Audit of the readers of ghost populations. In a step the exchange is

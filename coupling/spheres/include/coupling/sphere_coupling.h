@@ -10,6 +10,7 @@
 #include "coupling/particle_view.h"
 #include "coupling/reconstruction/refill.h"
 #include "lbm/fluid_solver.h"
+#include "lbm/moving_wall/ghost_moments.h"
 #include "lbm/moving_wall/link_boundary.h"
 #include "lbm/moving_wall/link_mass.h"
 #include "lbm/moving_wall/link_sweep.h"
@@ -67,7 +68,7 @@ class SphereCoupling {
   void map_and_refill(const ParticleView& view);
   // The populations crossing each face, and on the axes map_and_refill marked the moments
   // of the ghost nodes (four values each instead of the other 14 populations, the same
-  // result: FluidSolver::exchange_ghost_moments), which the next
+  // result: lbm::moving_wall::exchange_ghost_moments), which the next
   // apply_moving_walls_and_force reads.
   void exchange_halo();
   void apply_moving_walls_and_force(const ParticleView& view);

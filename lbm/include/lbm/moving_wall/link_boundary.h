@@ -41,7 +41,7 @@ int link_threads(std::size_t num_links);
 // are split over the OpenMP threads (moving_wall::apply: same result for any number), so
 // the links must be distinct and leave fluid nodes, as those of spheres and walls do.
 // With Mei-Luo-Shyy, `ghosts` (if non-null) are the moments of ghost nodes received this
-// step (FluidSolver::exchange_ghost_moments), read instead of computing them from ghost
+// step (moving_wall::exchange_ghost_moments), read instead of computing them from ghost
 // populations that were not exchanged.
 void apply_links(const std::vector<BoundaryLink>& links, MovingWallScheme scheme,
                  FluidSolver& solver, moving_wall::MomentCache* cache = nullptr,

@@ -11,17 +11,9 @@
 #include <vector>
 
 #include "lbm/macroscopic.h"
+#include "lbm/moving_wall/ghost_moments.h"
 
 namespace lbm::moving_wall {
-
-// The moments of ghost nodes as their owners computed them (FluidSolver::
-// exchange_ghost_moments): four values per node travel instead of the 14 populations that
-// the crossing five leave out. node_moments of the owner's populations is exactly what the
-// receiver would compute from all 19 received, so the result does not change.
-struct GhostMoments {
-  std::array<std::vector<double>, 4> component;  // rho, u_x, u_y, u_z; num_cells() each
-  std::vector<std::size_t> cells;                // the ghosts whose components were received
-};
 
 class MomentCache {
  public:

@@ -1,6 +1,6 @@
 #pragma once
 // Which cells of the halo planes carry ghost moments in a step (SphereCoupling::exchange_halo,
-// lbm::FluidSolver::exchange_ghost_moments). Mei-Luo-Shyy reads the moments of the ghost node
+// lbm::moving_wall::exchange_ghost_moments). Mei-Luo-Shyy reads the moments of the ghost node
 // x - c_q only for a link (x, q) of fraction below 1/2: its sphere's surface lies within
 // |c_q|/2 of x, so that node lies within R + 3/sqrt(2) (2.13 cells) of the sphere's centre
 // (minimum image). Of the planes a sweep along a marked axis sends, only the cells within

@@ -1,7 +1,7 @@
 #pragma once
 // Which axes the step's halo exchange must send more than the crossing five on: where the
 // moving-wall links may read a whole ghost node. Only its moments are read, so the exchange
-// sends those (SphereCoupling::exchange_halo, FluidSolver::exchange_ghost_moments: four
+// sends those (SphereCoupling::exchange_halo, moving_wall::exchange_ghost_moments: four
 // values per ghost instead of the other 14 populations); all 19 would give the same result.
 #include <array>
 
