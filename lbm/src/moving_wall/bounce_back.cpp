@@ -11,13 +11,6 @@ double BounceBack::returning_population(const BoundaryLink& link, std::ptrdiff_t
   return out - wall;
 }
 
-template void apply<BounceBack>(const std::vector<BoundaryLink>&, const BounceBack&,
-                                const BlockLayout&, PopulationField&,
-                                std::vector<std::array<double, 3>>*, int,
-                                std::vector<LinkPopulations>*);
-
-template void sweep<BounceBack>(const std::vector<BoundaryLink>&, const LinkSweep&, const BounceBack&,
-                                const BlockLayout&, double, const LinkMassRestorer&, PopulationField&,
-                                std::vector<LinkPopulations>&, std::vector<double>&, int);
+LBM_MOVING_WALL_INSTANTIATE_LOOPS(BounceBack);
 
 }  // namespace lbm::moving_wall

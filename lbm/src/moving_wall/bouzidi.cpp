@@ -18,12 +18,6 @@ double Bouzidi::returning_population(const BoundaryLink& link, std::ptrdiff_t of
   return out - wall;
 }
 
-template void apply<Bouzidi>(const std::vector<BoundaryLink>&, const Bouzidi&, const BlockLayout&,
-                             PopulationField&, std::vector<std::array<double, 3>>*, int,
-                             std::vector<LinkPopulations>*);
-
-template void sweep<Bouzidi>(const std::vector<BoundaryLink>&, const LinkSweep&, const Bouzidi&,
-                             const BlockLayout&, double, const LinkMassRestorer&, PopulationField&,
-                             std::vector<LinkPopulations>&, std::vector<double>&, int);
+LBM_MOVING_WALL_INSTANTIATE_LOOPS(Bouzidi);
 
 }  // namespace lbm::moving_wall

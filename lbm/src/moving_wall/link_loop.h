@@ -161,4 +161,16 @@ void apply(const std::vector<BoundaryLink>& links, const Scheme& scheme, const B
   }
 }
 
+// The two loops instantiated for `Scheme` in its own source file (inside namespace
+// lbm::moving_wall), so they are compiled with that file's options and inline its formula.
+#define LBM_MOVING_WALL_INSTANTIATE_LOOPS(Scheme)                                                \
+  template void apply<Scheme>(const std::vector<BoundaryLink>&, const Scheme&,                   \
+                              const BlockLayout&, PopulationField&,                              \
+                              std::vector<std::array<double, 3>>*, int,                          \
+                              std::vector<LinkPopulations>*);                                    \
+  template void sweep<Scheme>(const std::vector<BoundaryLink>&, const LinkSweep&, const Scheme&, \
+                              const BlockLayout&, double, const LinkMassRestorer&,               \
+                              PopulationField&, std::vector<LinkPopulations>&,                   \
+                              std::vector<double>&, int)
+
 }  // namespace lbm::moving_wall

@@ -35,13 +35,6 @@ double MeiLuoShyy::returning_population(const BoundaryLink& link, std::ptrdiff_t
   return (1.0 - chi) * out + chi * f_star - wall_term(q, rho0, uw);
 }
 
-template void apply<MeiLuoShyy>(const std::vector<BoundaryLink>&, const MeiLuoShyy&,
-                                const BlockLayout&, PopulationField&,
-                                std::vector<std::array<double, 3>>*, int,
-                                std::vector<LinkPopulations>*);
-
-template void sweep<MeiLuoShyy>(const std::vector<BoundaryLink>&, const LinkSweep&, const MeiLuoShyy&,
-                                const BlockLayout&, double, const LinkMassRestorer&, PopulationField&,
-                                std::vector<LinkPopulations>&, std::vector<double>&, int);
+LBM_MOVING_WALL_INSTANTIATE_LOOPS(MeiLuoShyy);
 
 }  // namespace lbm::moving_wall
