@@ -95,22 +95,20 @@ def find_bursts(steps, pressure, drop, window):
     return bursts
 
 
-def bursts_from_file(path, steps):
-    """(peak, minimum) row indices of the bursts in fix lbm/pore's burst file: the rows nearest
-    to each burst's peak step and to its peak step + Delta t / dt (the file's time is the fluid
-    time, one unit per fluid step of n_dem DEM steps: the minimum's DEM step is estimated from
-    the peak's and the fall's share of the run)."""
-    rows = []
+def burst_records(path):
+    """The rows of fix lbm/pore's burst file as dicts of its first six columns (step: the DEM
+    step of the peak, time, P_peak, P_after in P_out, delta_P, delta_t: peak to minimum), in
+    step order; a row with the step of an earlier one (a run resumed from a restart file
+    records again the bursts after that file) replaces it."""
+    names = ("step", "time", "P_peak", "P_after", "delta_P", "delta_t")
+    rows = {}
     with open(path) as burst_file:
         for line in burst_file:
             if line.startswith("#") or not line.split():
                 continue
-            words = line.split()
-            peak_step, peak_time, duration = float(words[0]), float(words[1]), float(words[5])
-            after_step = peak_step * (1.0 + duration / peak_time) if peak_time > 0 else peak_step
-            nearest = lambda s: min(range(len(steps)), key=lambda i: abs(steps[i] - s))
-            rows.append((nearest(peak_step), nearest(after_step)))
-    return rows
+            row = dict(zip(names, map(float, line.split()[:6])))
+            rows[row["step"]] = row
+    return [rows[step] for step in sorted(rows)]
 
 
 def run_timing(path):
@@ -128,8 +126,11 @@ def run_timing(path):
 def load(log, fix="pore", column=None, bursts=None, drop=0.1, window=10):
     """What the plot shows, read from the log (and the burst file): a dict with the thermo
     steps, the pressure loss and its column, the x values (time, or DEM steps without the
-    fix's setup line) and their label, the deposited count and volume (None where the thermo
-    block lacks them) and the bursts as (peak, minimum) row indices."""
+    fix's setup line) and their label, the deposited count and volume as (column, values),
+    (None, None) where the thermo block lacks them, and the bursts: dicts of the peak's DEM
+    step, P_peak and P_after (P_after None when the plot is not in P_out) and the x values of
+    the peak and the minimum. With `bursts` (the fix's burst file) the file's own peaks and
+    minima, else those find_bursts finds on the thermo rows."""
     header, rows = read_thermo(log)
 
     def find(index):
@@ -148,18 +149,37 @@ def load(log, fix="pore", column=None, bursts=None, drop=0.1, window=10):
     if timing:
         n_dem, dt_dem = timing
         x = [s * dt_dem for s in steps]
-        x_label = (f"time (the paper's fluid steps: DEM step x {dt_dem:g}; "
-                   f"{n_dem} DEM steps per fluid step)")
+        x_label = (f"time t = DEM step x {dt_dem:g} (in.pore: the paper's fluid steps; "
+                   f"{n_dem} DEM steps per fluid step of this run)")
     else:
         x, x_label = steps, "DEM step"
-    found = bursts_from_file(bursts, steps) if bursts else find_bursts(steps, pressure, drop, window)
+    # Each burst as its step, its pressures and where its span starts and ends on the x axis:
+    # the burst file's own peak (found every fluid step) and minimum, or the thermo rows'.
+    unit = "P / P_out" if column == find(16) else "pressure units"
+    marks = []
+    if bursts:
+        nearest = lambda s: min(range(len(steps)), key=lambda i: abs(steps[i] - s))  # noqa: E731
+        for b in burst_records(bursts):
+            if timing:
+                x_peak, x_after = b["step"] * dt_dem, b["step"] * dt_dem + b["delta_t"]
+            else:  # DEM steps: the minimum's from the peak's and the fall's share of the run
+                x_peak = b["step"]
+                x_after = b["step"] * (1.0 + b["delta_t"] / b["time"]) if b["time"] > 0 else b["step"]
+            in_p_out = unit == "P / P_out"
+            marks.append(dict(step=b["step"], x_peak=x_peak, x_after=x_after,
+                              P_peak=b["P_peak"] if in_p_out else pressure[nearest(b["step"])],
+                              P_after=b["P_after"] if in_p_out else None))
+    else:
+        for peak, after in find_bursts(steps, pressure, drop, window):
+            marks.append(dict(step=steps[peak], x_peak=x[peak], x_after=x[after],
+                              P_peak=pressure[peak], P_after=pressure[after]))
     series = {}
     for index, name in ((7, "count"), (6, "volume")):
         c = find(index)
         series[name] = (c, [r[header.index(c)] for r in rows]) if c else (None, None)
-    unit = "P / P_out" if column == find(16) else "pressure units"
     return dict(steps=steps, x=x, x_label=x_label, pressure=pressure, column=column, unit=unit,
-                bursts=found, bursts_from_file=bool(bursts), count=series["count"], volume=series["volume"])
+                bursts=marks, bursts_from_file=bool(bursts), count=series["count"],
+                volume=series["volume"])
 
 
 def figure(data):
@@ -174,12 +194,12 @@ def figure(data):
     fig, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=(8, 6),
                                       gridspec_kw=dict(height_ratios=[2, 1]))
     top.plot(x, pressure, lw=1.2, color="tab:blue", label="pressure loss")
-    for n, (peak, after) in enumerate(bursts, start=1):
+    for n, b in enumerate(bursts, start=1):
         for ax in (top, bottom):
-            ax.axvspan(x[peak], x[after], color="tab:red", alpha=0.25, lw=0)
-        top.plot([x[peak]], [pressure[peak]], "v", color="tab:red",
+            ax.axvspan(b["x_peak"], b["x_after"], color="tab:red", alpha=0.25, lw=0)
+        top.plot([b["x_peak"]], [b["P_peak"]], "v", color="tab:red",
                  label="erosive burst: peak to minimum" if n == 1 else None)
-        top.annotate(str(n), (x[peak], pressure[peak]), textcoords="offset points",
+        top.annotate(str(n), (b["x_peak"], b["P_peak"]), textcoords="offset points",
                      xytext=(0, 6), ha="center", fontsize=8, color="tab:red")
     top.set_ylabel(f"pressure loss, {data['unit']}\n({data['column']})")
     source = "recorded by fix lbm/pore" if data["bursts_from_file"] else "found on the thermo rows"
@@ -222,11 +242,11 @@ def main(argv=None):
                              "replaying the rules on the thermo rows")
     args = parser.parse_args(argv)
     data = load(args.log, args.fix, args.column, args.bursts, args.drop, args.window)
-    steps, pressure = data["steps"], data["pressure"]
-    for peak, after in data["bursts"]:
-        print(f"BURST step {steps[peak]:.0f} peak {pressure[peak]:.6g} after {pressure[after]:.6g} "
-              f"drop {1 - pressure[after] / pressure[peak]:.3f}")
-    print(f"{len(data['bursts'])} burst(s) in {len(steps)} thermo rows")
+    for b in data["bursts"]:
+        after = "n/a" if b["P_after"] is None else f"{b['P_after']:.6g}"
+        drop = "n/a" if b["P_after"] is None else f"{1 - b['P_after'] / b['P_peak']:.3f}"
+        print(f"BURST step {b['step']:.0f} peak {b['P_peak']:.6g} after {after} drop {drop}")
+    print(f"{len(data['bursts'])} burst(s) in {len(data['steps'])} thermo rows")
     try:
         import matplotlib  # noqa: F401
     except ImportError:
