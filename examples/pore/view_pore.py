@@ -9,9 +9,14 @@ or load it in the ParaView GUI: View > Python Shell > Run Script.
 Fluid: fluid_vtk/fluid.pvd (written by fix lbm/pore ... vtk N fluid_vtk): a slice through
 the pore axis coloured by the velocity magnitude, and the solid (node_type 1) as a
 translucent contour. Particles: particles_vtk/particles_*.vtp (LIGGGHTS dump custom/vtk, XML .vtp)
-as spheres of their own radius, coloured by their speed. Both series carry the same
+as spheres of their own radius, in one colour. Both series carry the same
 simulation time (the script writes particles_vtk/particles.pvd with time = step * dt, the
 fluid series already carries time = fluid steps * dt_lbm), so the animation keeps them in step.
+
+Without ParaView: examples/paper/render_snapshot.py draws a slice of the fluid speed with the
+particles coloured by drag per mass (|f_pore[1-3]| / mass) from the same files, with VTK's
+Python bindings and matplotlib; `render_snapshot.py . --at peak` takes the frame nearest the
+run's highest pressure peak (tools/run_example.sh writes it as snapshot_peak.png).
 """
 import glob
 import sys
