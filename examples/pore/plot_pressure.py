@@ -217,7 +217,12 @@ def figure(data):
                             label=f"deposited volume V_dep ({volume_column})")
         right.set_ylabel("V_dep (d^3 in in.pore)", color="tab:purple")
     if lines:
-        bottom.legend(lines, [line.get_label() for line in lines], loc="upper left", fontsize=8)
+        # Head room for the legend above the curves.
+        for line in lines:
+            high = max(line.get_ydata(), default=0.0)
+            line.axes.set_ylim(-0.05 * (high or 1.0), 1.6 * (high or 1.0))
+        bottom.legend(lines, [line.get_label() for line in lines], loc="upper left", fontsize=8,
+                      ncol=2)
     else:
         bottom.text(0.5, 0.5, "no deposit columns (f_ID[6], f_ID[7]) in the thermo block",
                     transform=bottom.transAxes, ha="center", va="center")
