@@ -27,9 +27,11 @@ PORE_DIAMETERS = [1.76, 2.11, 2.82, 3.52, 4.23, 5.28, 6.34, 7.04]
 # The regime the calibration chose for the paper-size runs (doc/calibration.md, "The choice"):
 # the paper's Eq. 2 read literally (the reference pressure kept) and the inlet velocity at
 # which its deposits grow to the paper's 20-40 particles and are held as its force balance
-# says. in.pore's own defaults (u_lattice 0.02, the reference pressure removed), which the
-# quick size keeps, show clogging and bursts within minutes, with deposits of a few particles.
+# says; in.pore's defaults are this regime too. The tiny and quick sizes are smoke tests of
+# the machinery: they run at u_lattice 0.02 with the reference pressure removed, where a run
+# of minutes clogs the pore and bursts (deposits of a few particles, not the paper's).
 PAPER_REGIME = dict(u_lattice=0.0025, reference_pressure="keep")
+SMOKE_REGIME = dict(u_lattice=0.02, reference_pressure="remove")
 
 SIZES = {
     # cells per d, DEM steps with particles, warm-up DEM steps, thermo and VTK intervals
@@ -37,9 +39,10 @@ SIZES = {
     # (burst_deposits 0), so that seconds-long runs have burst rows for the analyses to read
     # (not erosive bursts: flow wiggles)
     "tiny": dict(cells_per_d=4, steps=30000, warmup=2000, thermo_every=500, vtk_every=100,
-                 burst_drop=0.003, burst_window=20, burst_deposits=0),
+                 burst_drop=0.003, burst_window=20, burst_deposits=0, **SMOKE_REGIME),
     # quick and paper: 2000 fluid steps of warm-up, past the start-up transient of the flow
-    "quick": dict(cells_per_d=5, steps=2000000, warmup=200000, thermo_every=2000, vtk_every=0),
+    "quick": dict(cells_per_d=5, steps=2000000, warmup=200000, thermo_every=2000, vtk_every=0,
+                  **SMOKE_REGIME),
     "paper": dict(cells_per_d=7.1, steps=100000000, warmup=200000, thermo_every=10000,
                   vtk_every=0, **PAPER_REGIME),
 }
