@@ -34,17 +34,16 @@ class LatticeParticles {
   // Positions through the frame, velocities, angular velocities and radii through the units.
   void gather(const AtomArrays& atoms, const coupling::LatticeFrame& frame, const coupling::UnitConversion& units);
 
-  coupling::ParticleView view() const;
+  coupling::ParticleView view() const { return particles_.view(rotating_); }
   std::size_t size() const { return atom_.size(); }
-  std::size_t num_owned() const { return num_owned_; }
+  std::size_t num_owned() const { return particles_.num_owned; }
   // LIGGGHTS atom index (0..nlocal+nghost) of view entry p.
   int atom(std::size_t p) const { return atom_[p]; }
 
  private:
-  std::size_t num_owned_ = 0;
+  coupling::ParticleSet particles_;  // the lattice-unit copies, entry p from atom_[p]
   bool rotating_ = false;
-  std::vector<int> atom_, id_;
-  std::vector<double> position_, velocity_, angular_velocity_, radius_;
+  std::vector<int> atom_;
 };
 
 }  // namespace lbm_pore

@@ -53,20 +53,33 @@ struct ParticlePair {
   int i = 0, j = 0;
 };
 
-// An owning particle list for tests and small drivers; view() exposes it.
+// An owning particle list (tests, small drivers, a host's lattice-unit copies of its atoms);
+// view() exposes it. Owned particles are added before ghosts.
 struct ParticleSet {
   std::size_t num_owned = 0;  // the rest are ghosts
   std::vector<int> id;
   std::vector<double> position, velocity, angular_velocity, radius;
 
   std::size_t size() const { return radius.size(); }
-  void add(int identifier, const Vec3& x, const Vec3& v, double r, bool owned = true) {
+  void clear() {
+    num_owned = 0;
+    id.clear();
+    position.clear();
+    velocity.clear();
+    angular_velocity.clear();
+    radius.clear();
+  }
+  void add(int identifier, const Vec3& x, const Vec3& v, const Vec3& omega, double r,
+           bool owned = true) {
     id.push_back(identifier);
     position.insert(position.end(), x.begin(), x.end());
     velocity.insert(velocity.end(), v.begin(), v.end());
-    angular_velocity.insert(angular_velocity.end(), {0.0, 0.0, 0.0});
+    angular_velocity.insert(angular_velocity.end(), omega.begin(), omega.end());
     radius.push_back(r);
     if (owned) num_owned = size();
+  }
+  void add(int identifier, const Vec3& x, const Vec3& v, double r, bool owned = true) {
+    add(identifier, x, v, {0.0, 0.0, 0.0}, r, owned);
   }
   void set_position(std::size_t p, const Vec3& x) {
     for (int a = 0; a < 3; ++a) position[3 * p + a] = x[a];
