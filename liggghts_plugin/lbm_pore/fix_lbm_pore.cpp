@@ -1,7 +1,5 @@
 #include "fix_lbm_pore.h"
 
-#include <cstring>
-
 #include "atom.h"
 #include "comm.h"
 #include "coupling/diagnostics/particle_probes.h"
@@ -11,7 +9,6 @@
 #include "coupling/unit_conversion.h"
 #include "domain.h"
 #include "error.h"
-#include "fix_gravity.h"
 #include "force.h"
 #include "lbm/checkpoint.h"
 #include "lbm/fluid_solver.h"
@@ -20,6 +17,7 @@
 #include "lbm/vtk_output.h"
 #include "memory.h"
 #include "modify.h"
+#include "liggghts_queries.h"
 #include "neigh_list.h"
 #include "neigh_request.h"
 #include "plugin_common/entry_guard.h"
@@ -58,16 +56,10 @@ FixLbmPore::FixLbmPore(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg, arg) 
   extvector = 0;
   restart_global = 1;
   restart_peratom = 1;
-  // LIGGGHTS's insertions (ParticleToInsert::insert) call set_arrays for a new atom only
-  // where this is set. Without it a new atom kept whatever its slot held, which the tag
-  // check of AtomStates::own catches only while tags are not reused, and insertion reuses
-  // them (Atom::tag_extend numbers new atoms from the largest tag left): a new particle once
-  // took a former one's previous position and stopped a long run with "moves 38.2 cells per
-  // fluid step" at its first fluid step (doc/calibration.md).
+  // LIGGGHTS's insertions call set_arrays for a new atom only where this is set; without it
+  // a new atom kept its slot's state (insertion reuses tags, so the tag check misses it).
   create_attribute = 1;
-  // LIGGGHTS calls end_of_step only on steps that are multiples of nevery: the fluid step's
-  // own test (end_of_step) then holds on every call, and the 99 substeps in between cost
-  // no call at all (Modify::end_of_step's modulo instead of a virtual call each).
+  // end_of_step is then called only at fluid steps: the substeps in between cost no call.
   nevery = options_.n_dem;
   comm_forward = 6;  // velocity, angular velocity
   comm_reverse = lbm_pore::AtomCouplingState::kSummed;
@@ -92,7 +84,7 @@ int FixLbmPore::setmask() { return FixConst::POST_INTEGRATE | FixConst::POST_FOR
 // fluid step (or the run's last step), on every rank at once (plugin_common/stop_signals.h),
 // so the forced restart is written right after the fluid step, as at a multiple of n_dem.
 void FixLbmPore::post_integrate() {
-  if (update->ntimestep % options_.n_dem == 0 || update->ntimestep == update->laststep)
+  if (at_fluid_step() || update->ntimestep == update->laststep)
     lbm_pore::take_stop_requests(world);
 }
 
@@ -140,20 +132,6 @@ void FixLbmPore::init() {
 
 void FixLbmPore::init_list(int, NeighList* list) { list_ = list; }
 
-// Buoyancy needs fix gravity's acceleration (coupling/force/substep_load.h): the sum over the
-// fix gravity of the script, none without one.
-std::optional<coupling::Vec3> FixLbmPore::find_gravity() const {
-  std::optional<coupling::Vec3> gravity;
-  for (int i = 0; i < modify->nfix; ++i) {
-    if (std::strcmp(modify->fix[i]->style, "gravity") != 0) continue;
-    double g[3];
-    static_cast<FixGravity*>(modify->fix[i])->get_gravity(g);
-    if (!gravity) gravity = coupling::Vec3{0.0, 0.0, 0.0};
-    for (int a = 0; a < 3; ++a) (*gravity)[a] += g[a];
-  }
-  return gravity;
-}
-
 void FixLbmPore::build_geometry() {
   auto scene = lbm_pore::build_scene(options_, domain->boxlo);
   geometry_ = scene.geometry;
@@ -182,22 +160,14 @@ void FixLbmPore::build_lattice(std::unique_ptr<coupling::UnitConversion> units) 
   lbm_pore::set_monitor_criteria(monitor_setup_, options_, *units_, drive);
   const std::string warning = lbm::drive_accuracy_warning(drive);
   if (!warning.empty() && comm->me == 0) error->warning(FLERR, ("fix lbm/pore: pressure_loss: " + warning).c_str());
-  monitor_ = std::make_unique<coupling::PoreMonitor>(monitor_setup_, *units_);
-  if (!restored_state_.empty()) {
-    try {
-      monitor_->restore(restored_state_);
-    } catch (const std::invalid_argument& e) {
-      throw lbm::InputError(std::string("restart: ") + e.what());
-    }
-  }
-  open_monitor_files();
+  start_monitor();
   if (options_.vtk_every > 0)
     vtk_ = std::make_unique<lbm::VtkSeriesWriter>(options_.vtk_directory, "fluid");
 }
 
 void FixLbmPore::setup(int vflag) {
-  // After every fix's init(): fix gravity sets its acceleration there.
-  const std::optional<coupling::Vec3> gravity = find_gravity();
+  // After every fix's init(): fix gravity sets its acceleration there (buoyancy needs it).
+  const std::optional<coupling::Vec3> gravity = lbm_pore::script_gravity(*modify);
   if (gravity && comm->me == 0)
     lbm_pore::print_to_screen_and_log(screen, logfile, lbm_pore::buoyancy_summary(*gravity).c_str());
   load_model_ = std::make_unique<coupling::SubstepLoadModel>(
@@ -225,16 +195,7 @@ void FixLbmPore::setup(int vflag) {
 void FixLbmPore::collect_group_pairs() {
   if (pairs_step_ == neighbor->lastcall || !list_) return;
   pairs_step_ = neighbor->lastcall;
-  pairs_.clear();
-  const int* mask = atom->mask;
-  for (int ii = 0; ii < list_->inum; ++ii) {
-    const int i = list_->ilist[ii];
-    if (!(mask[i] & groupbit)) continue;
-    for (int jj = 0; jj < list_->numneigh[i]; ++jj) {
-      const int j = list_->firstneigh[i][jj] & NEIGHMASK;
-      if (mask[j] & groupbit) pairs_.push_back({i, j});
-    }
-  }
+  pairs_ = lbm_pore::group_pairs(*list_, atom->mask, groupbit);
 }
 
 lbm_pore::AtomArrays FixLbmPore::atom_arrays() const {
@@ -264,8 +225,10 @@ void FixLbmPore::find_walls() {
   states_.find_walls(atom_arrays(), *surface_, reach, wall_points_);
 }
 
+bool FixLbmPore::at_fluid_step() const { return update->ntimestep % options_.n_dem == 0; }
+
 void FixLbmPore::end_of_step() {
-  if (update->ntimestep % options_.n_dem == 0) fluid_step();
+  if (at_fluid_step()) fluid_step();
 }
 
 // Lattice-unit copies of the group's owned atoms and ghosts, with the velocity the fluid

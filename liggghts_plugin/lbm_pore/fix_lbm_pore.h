@@ -85,14 +85,14 @@ class FixLbmPore : public Fix {
 
   void build_geometry();
   void build_lattice(std::unique_ptr<coupling::UnitConversion> units);
-  std::optional<coupling::Vec3> find_gravity() const;
   void fluid_step();
   void gather_particles(bool advance);
   void store_loads(bool coupled);
   void collect_group_pairs();
   void find_walls();
   void record_particles();
-  void open_monitor_files();
+  void start_monitor();
+  bool at_fluid_step() const;
   void record_fluid_step();
   void check_fluid_state();
   void check_particle_speed();

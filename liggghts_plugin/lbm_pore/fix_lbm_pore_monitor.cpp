@@ -10,6 +10,7 @@
 #include "error.h"
 #include "fix_lbm_pore.h"
 #include "lbm/fluid_solver.h"
+#include "lbm/input_error.h"
 #include "modify.h"
 #include "pore_scene_setup.h"
 #include "plugin_common/stop_run.h"
@@ -61,11 +62,18 @@ void FixLbmPore::record_particles() {
   monitor_->record_particles(particles_.view(), bonded_, on_wall_, loads, solver_->decomposition().comm);
 }
 
-// The monitor's files: the bursts (rank 0 writes) and the deposit region's speeds (every rank
-// counts, rank 0 writes); a resumed run appends to both. A file that cannot be opened stops
-// the run from rank 0, naming the keyword.
-void FixLbmPore::open_monitor_files() {
+// The monitor, with the state of the restart file a run resumes from, and its files: the
+// bursts (rank 0 writes) and the deposit region's speeds (every rank counts, rank 0 writes);
+// a resumed run appends to both. A file that cannot be opened stops the run from rank 0,
+// naming the keyword.
+void FixLbmPore::start_monitor() {
+  monitor_ = std::make_unique<coupling::PoreMonitor>(monitor_setup_, *units_);
   const bool resumed = !restored_state_.empty();
+  try {
+    if (resumed) monitor_->restore(restored_state_);
+  } catch (const std::invalid_argument& e) {
+    throw lbm::InputError(std::string("restart: ") + e.what());
+  }
   const char* keyword = "burst_file";
   try {
     if (comm->me == 0 && !options_.burst_file.empty())

@@ -23,7 +23,7 @@ using namespace LAMMPS_NS;
 void FixLbmPore::write_restart(FILE* fp) {
   const std::string prefix = lbm_pore::checkpoint_prefix(options_, id);
   const std::string path = lbm_pore::checkpoint_path(prefix, update->ntimestep);
-  if (update->ntimestep % options_.n_dem != 0 && comm->me == 0)
+  if (!at_fluid_step() && comm->me == 0)
     error->warning(FLERR, "fix lbm/pore: restart written between fluid steps (not a multiple of "
                           "n_dem): the continued run will differ slightly from an uninterrupted one");
   try {
