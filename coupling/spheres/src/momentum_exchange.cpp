@@ -103,7 +103,7 @@ void add_momentum_exchange(const SphereLinks& links,
                            const std::vector<lbm::LinkPopulations>& populations,
                            MomentumExchange method, double rho0, HydrodynamicLoads& loads,
                            ReferencePressure reference) {
-  const double rho_gauge = reference == ReferencePressure::kRemoved ? rho0 : 0.0;
+  const double rho_gauge = gauge_density(reference, rho0);
   if (method == MomentumExchange::kGalileanInvariant)
     sum_all_links<true>(links, populations, rho0, rho_gauge, loads);
   else

@@ -108,7 +108,7 @@ void SphereCoupling::apply_moving_walls_and_force(const ParticleView& view) {
   add_momentum_exchange(links_, link_populations_, options_.momentum_exchange, rho0, loads_,
                         options_.reference_pressure);
   // The fluid beyond the open faces on the spheres that reach them (the same gauge).
-  add_open_face_pressure(view, solver_, options_.reference_pressure == ReferencePressure::kRemoved ? rho0 : 0.0,
+  add_open_face_pressure(view, solver_, gauge_density(options_.reference_pressure, rho0),
                          loads_);
 }
 

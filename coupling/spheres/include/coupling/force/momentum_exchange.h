@@ -25,6 +25,11 @@ enum class MomentumExchange {
 // the wall ("void as vacuum"), two touching spheres together.
 enum class ReferencePressure { kRemoved, kKept };
 
+// The gauge density whose share 2 w_q rho_gauge each link loses: rho0 removed, 0 kept.
+inline double gauge_density(ReferencePressure reference, double rho0) {
+  return reference == ReferencePressure::kRemoved ? rho0 : 0.0;
+}
+
 // Per-particle force and torque of one fluid step (lattice units, force = momentum per step).
 struct HydrodynamicLoads {
   std::vector<Vec3> force;   // indexed like the view of the step (owned and ghosts)
