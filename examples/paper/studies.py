@@ -271,7 +271,7 @@ def calibration(size):
 # The model's open points (doc/calibration.md), each as the knobs that switch it from in.pore's
 # default. deposit_region and deposit_speed change what counts, not the physics: their twins
 # repeat the base run's trajectory and count the deposits inside the pore alone, or every
-# bonded particle slower than half of u_in (the default: a tenth).
+# bonded particle slower than half of u_in (in.pore's default: 0.1408 d per 1000 time units).
 # (in.pore inserts with the paper's min_gap 0.25; its twin inserts without a distance. Study
 # folders made while the default was 0 hold the other way round: a base at 0 and a twin
 # `_min_gap` at 0.25.)
@@ -279,7 +279,9 @@ MODEL_TWINS = (("no_gap", {"min_gap": 0}),
                ("keep_pressure", {"reference_pressure": "keep"}),
                ("fraction", {"substep_force": "fraction"}),
                ("pore_deposits", {"deposit_region": "pore"}),
-               ("slow_deposits", {"deposit_speed": 0.5}))
+               # half the inlet velocity at u_lattice 0.005 (the twins' velocity), in d per time
+               # unit: u_in = u_lattice / 7.1 at any cells per d (in.pore's acoustic scaling)
+               ("slow_deposits", {"deposit_speed": 0.5 * 0.005 / PAPER_CELLS_PER_D}))
 
 
 STUDIES = {f.__name__: f for f in (singlejump, collection, dropvol, porelength, porediameter,

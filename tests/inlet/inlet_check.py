@@ -70,15 +70,16 @@ def concentration_two_ranks(harness):
 
 
 def bad_knobs(harness):
-    """A negative insertion period, minimum gap or deposit speed stops in.pore with an error
-    naming the knob and its range, before any step."""
+    """A negative insertion period or minimum gap, or a deposit speed not above 0, stops
+    in.pore with an error naming the knob and its range, before any step."""
     scripts = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "examples", "pore")
-    for knob in ("insert_period", "min_gap", "deposit_speed"):
+    for knob, bad, rule, fix in (("insert_period", -1, ">= 0", "at_least_0"), ("min_gap", -1, ">= 0", "at_least_0"),
+                                 ("deposit_speed", 0, "> 0", "above_0")):
         run = harness.run(os.path.join(scripts, "in.pore"),
-                          {"cells_per_d": 4, "warmup": 100, "steps": 100, "vtk_every": 0, knob: -1},
+                          {"cells_per_d": 4, "warmup": 100, "steps": 100, "vtk_every": 0, knob: bad},
                           expect_error=True, timeout=60)
         error = h.error_line(run.output)
-        said = f"in.pore: {knob} must be >= 0" in run.output and f"{knob}_must_be_at_least_0" in error
+        said = f"in.pore: {knob} must be {rule}" in run.output and f"{knob}_must_be_{fix}" in error
         h.check(f"negative {knob} is refused", run.code != 0 and said, error or "no ERROR line",
                 f"an ERROR naming {knob}, its range printed, exit status not 0")
 

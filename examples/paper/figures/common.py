@@ -63,18 +63,50 @@ def largest_deposit_before(columns, peak_step, window_steps):
     return (int(round(columns["pore[7]"][k])), at[0], at[1])
 
 
-def with_largest_deposits(run, rows, columns=None):
-    """Copies of a run's burst rows whose deposit (deposit_count, deposit_V, deposit_L) is the
-    largest in the window before the peak (largest_deposit_before, from the run's thermo
-    rows); a burst without rows in its window keeps the record's median."""
+# The deposit a burst tears off, as every figure counts it (doc/paper.md, "The deposit"): the
+# particles at rest (bonded, inside the pore radius, slower than in.pore's deposit_speed,
+# 0.1408 d per 1000 time units) a fifth of the burst window before the peak. A deposit is
+# released before the pressure peaks: over the last tenth of the window its particles pass
+# any speed bound up to 1.6 u_in and drop out of the count, while a fifth and two fifths of
+# the window before the peak the count is the same (the speed survey of the paper-length
+# scene, doc/paper.md).
+RELEASE_LEAD = 0.2  # burst windows before the peak
+
+
+def deposit_before_release(columns, peak_step, window_steps, lead=RELEASE_LEAD):
+    """(count, V_dep, L_dep) of the thermo row at or before peak_step - lead * window_steps
+    (f_pore[7], f_pore[6], f_pore[8]); None without a row in the window before the peak."""
+    steps = np.asarray(columns.get("Step", []), float)
+    at = peak_step - lead * window_steps
+    inside = np.flatnonzero((steps >= peak_step - window_steps) & (steps <= at))
+    if not len(inside) or "pore[7]" not in columns:
+        return None
+    k = inside[-1]
+    volume = [float(columns[c][k]) if c in columns else np.nan for c in ("pore[6]", "pore[8]")]
+    return (int(round(columns["pore[7]"][k])), volume[0], volume[1])
+
+
+def with_deposits(run, rows, measure, columns=None):
+    """Copies of a run's burst rows with their deposit (deposit_count, deposit_V, deposit_L) as
+    `measure` takes it from the run's thermo rows: "before_release" (deposit_before_release)
+    or "largest" (largest_deposit_before); a burst without rows in its window keeps the
+    record's median."""
+    take = {"before_release": deposit_before_release, "largest": largest_deposit_before}[measure]
     columns = thermo(run["folder"]) if columns is None else columns
     window = burst_window_dem_steps(run["folder"], run["knobs"])
     out = []
     for b in rows:
-        largest = largest_deposit_before(columns, b["step"], window)
-        out.append(b if largest is None else
-                   dict(b, deposit_count=largest[0], deposit_V=largest[1], deposit_L=largest[2]))
+        deposit = take(columns, b["step"], window)
+        out.append(b if deposit is None else
+                   dict(b, deposit_count=deposit[0], deposit_V=deposit[1], deposit_L=deposit[2]))
     return out
+
+
+def with_largest_deposits(run, rows, columns=None):
+    """Copies of a run's burst rows whose deposit (deposit_count, deposit_V, deposit_L) is the
+    largest in the window before the peak (largest_deposit_before, from the run's thermo
+    rows); a burst without rows in its window keeps the record's median."""
+    return with_deposits(run, rows, "largest", columns)
 
 
 def resampled(groups):
@@ -87,23 +119,27 @@ def resampled(groups):
     return [([xi], [yi]) for x, y in groups for xi, yi in zip(x, y)], "bursts"
 
 
-def pressure_fits(summary, x_of, deposit="median"):
+DEPOSIT_MEASURES = ("before_release", "median", "largest")
+
+
+def pressure_fits(summary, x_of, deposit="before_release"):
     """The fits of the peak pressure against x_of(run, burst), the same three for every
     figure so that like is compared with like: the paper's line through the origin on P, the
     same on the pressure the deposit adds, P - P_0 (P_0 = clean_pressure of each run), and a
     line with an intercept on P. Each value (value, low, high) with fit_stats.bootstrap's
     interval over runs (over bursts for a single run: `resampled`); also the Pearson
     coefficient, the per-run point groups and `unit`, what the intervals resample.
-    deposit: "median", the burst records' deposit (the median over the burst window), or
-    "largest", the largest deposit in that window (with_largest_deposits)."""
+    deposit: "before_release", the figures' measure (deposit_before_release); "median", the
+    burst records' deposit (the median over the burst window); or "largest", the largest
+    deposit in that window (largest_deposit_before)."""
     from fit_stats import bootstrap, intercept, pearson, slope, slope_through_origin
-    if deposit not in ("median", "largest"):
-        raise ValueError(f"deposit must be 'median' or 'largest', not {deposit!r}")
+    if deposit not in DEPOSIT_MEASURES:
+        raise ValueError(f"deposit must be one of {', '.join(DEPOSIT_MEASURES)}, not {deposit!r}")
     groups, excess = [], []
     for run in finished_runs(summary):
         rows = bursts(run["folder"])
-        if deposit == "largest":
-            rows = with_largest_deposits(run, rows)
+        if deposit != "median":
+            rows = with_deposits(run, rows, deposit)
         p0 = clean_pressure(run)
         x = [x_of(run, b) for b in rows]
         groups.append((x, [b["P_peak"] for b in rows]))
@@ -127,21 +163,37 @@ def fits_text(fits):
             f"(intercept {fmt(*fits['intercept'])}){over}")
 
 
-def largest_text(fits):
-    """The fits on the largest deposit in the window before the peak, in one phrase."""
+# The measures shown beside the figures' own, and how each is named on a plot.
+BESIDE = {"median": ("the median over the burst window", "s", "C7"),
+          "largest": ("the largest in the burst window", "o", "0.5")}
+
+
+def beside_fits(summary, x_of):
+    """pressure_fits of each measure shown beside the figures' deposit (BESIDE)."""
+    return {m: pressure_fits(summary, x_of, deposit=m) for m in BESIDE}
+
+
+def beside_text(beside):
+    """The fits on the other deposit measures, in one phrase."""
     from fit_stats import fmt
-    return (f"on the largest deposit in the burst window before the peak: P - P_0 "
-            f"through 0 {fmt(*fits['excess_through_origin'])}, Pearson {fmt(*fits['pearson'])}")
+    return "; ".join(f"on {BESIDE[m][0]}: P - P_0 through 0 {fmt(*f['excess_through_origin'])}, "
+                     f"Pearson {fmt(*f['pearson'])}" for m, f in beside.items())
 
 
-def draw_largest(ax, fits):
-    """The bursts at their largest deposit in the window, as hollow markers beside the
-    records' medians."""
-    x = [xi for g in fits["groups"] for xi in g[0]]
-    y = [yi for g in fits["groups"] for yi in g[1]]
-    if x:
-        ax.plot(x, y, "o", ms=5, mfc="none", mec="0.5", mew=0.8,
-                label=f"largest deposit in the window (Pearson {fits['pearson'][0]:.2f})")
+def beside_results(beside):
+    """The other measures' fits for results.json."""
+    return {f"{m}_in_window": {k: f[k] for k in ("excess_through_origin", "pearson")} for m, f in beside.items()}
+
+
+def draw_beside(ax, beside):
+    """The bursts with the other measures' deposits, as hollow markers beside the figure's."""
+    for m, fits in beside.items():
+        x = [xi for g in fits["groups"] for xi in g[0]]
+        y = [yi for g in fits["groups"] for yi in g[1]]
+        label, marker, colour = BESIDE[m]
+        if x:
+            ax.plot(x, y, marker, ms=5, mfc="none", mec=colour, mew=0.8,
+                    label=f"deposit {label} (Pearson {fits['pearson'][0]:.2f})")
 
 
 def draw_fits(ax, fits, top, paper=None, paper_label="paper"):

@@ -6,14 +6,15 @@ The paper's V_dep axis is normalised: from its own K = 0.91 (Fig. porediameter, 
 P = 16 f_a V_dep / (pi D^3)) the slope is 4 K / pi = 1.16 for V_dep in D^3 and K L / D = 1.09
 for V_dep in pore volumes (pi D^2 L / 4), but 0.027 for V_dep in d^3 (doc/references.md).
 So V_dep is plotted per D^3, the unit whose slope the paper's 1.15 matches, and the slope per
-pore volume is given beside it; each with the three fits of figures.common.pressure_fits. Beside
-the records' deposit (the median over the burst window), the fit on the largest deposit in that
-window (hollow markers), the deposit before it began to slide."""
+pore volume is given beside it; each with the three fits of figures.common.pressure_fits, on the
+deposit every figure counts (figures.common.deposit_before_release; doc/paper.md, "The
+deposit"), and beside it (hollow markers) the median and the largest deposit of the burst
+window."""
 import numpy as np
 
 from fit_stats import fmt
-from figures.common import (draw_fits, draw_largest, fits_text, largest_text, plt, pressure_fits,
-                            result, save)
+from figures.common import (beside_fits, beside_results, beside_text, draw_beside, draw_fits, fits_text, plt,
+                            pressure_fits, result, save)
 
 PAPER_SLOPE, PAPER_PEARSON, PAPER_K = 1.15, 0.71, 0.91
 
@@ -30,13 +31,13 @@ def per_pore_volume(run, burst):
 def analyze(summary, out_dir):
     fits = pressure_fits(summary, per_cube_of_diameter)
     pore = pressure_fits(summary, per_pore_volume)
-    largest = pressure_fits(summary, per_cube_of_diameter, deposit="largest")
+    beside = beside_fits(summary, per_cube_of_diameter)
     groups = fits["groups"]
     fig, ax = plt.subplots(figsize=(6, 4.5))
     for x, y in groups:
         ax.plot(x, y, "o", ms=4, alpha=0.7)
     x = np.concatenate([g[0] for g in groups if len(g[0])] or [np.zeros(0)])
-    draw_largest(ax, largest)
+    draw_beside(ax, beside)
     draw_fits(ax, fits, x.max() if len(x) else 1.0, PAPER_SLOPE)
     ax.set_xlabel("V_dep of the deposit the burst tore off [D^3]")
     ax.set_ylabel("P_peak [P_out]")
@@ -48,11 +49,11 @@ def analyze(summary, out_dir):
                   f"{PAPER_SLOPE}(1) (4 K / pi = {4 * PAPER_K / np.pi:.3g} per D^3, K L / D = "
                   f"{PAPER_K * 4.23 / 3.52:.3g} per pore volume); {PAPER_PEARSON}(1)",
                   f"per D^3: {fits_text(fits)}; per pore volume: {fits_text(pore)}; "
-                  f"Pearson {fmt(*fits['pearson'])}; {largest_text(largest)}",
+                  f"Pearson {fmt(*fits['pearson'])}; {beside_text(beside)}",
                   save(fig, out_dir, "dropvol"), slope=fits["slope"],
                   through_origin=fits["through_origin"],
                   excess_through_origin=fits["excess_through_origin"], intercept=fits["intercept"],
                   per_pore_volume={k: pore[k] for k in ("through_origin", "excess_through_origin",
                                                         "slope", "intercept")},
                   pearson=fits["pearson"], bursts=int(len(x)),
-                  largest_in_window={k: largest[k] for k in ("excess_through_origin", "pearson")})
+                  **beside_results(beside))

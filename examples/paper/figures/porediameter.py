@@ -8,8 +8,8 @@ particles that are not in the deposit, so this f_a is an upper estimate."""
 import numpy as np
 
 from fit_stats import bootstrap, fmt
-from figures.common import (bursts, draw_fits, draw_largest, finished_runs, fits_text, largest_text,
-                            p_out, plt, pressure_fits, resampled, result, save, thermo)
+from figures.common import (beside_fits, beside_results, beside_text, bursts, draw_beside, draw_fits,
+                            finished_runs, fits_text, p_out, plt, pressure_fits, resampled, result, save, thermo)
 
 PAPER_K = 0.91
 
@@ -37,8 +37,7 @@ def analyze(summary, out_dir):
     runs = finished_runs(summary)
     points = [_points(run) for run in runs]
     fits = pressure_fits(summary, lambda run, b: b["deposit_L"] / float(run["knobs"]["D"]))
-    largest = pressure_fits(summary, lambda run, b: b["deposit_L"] / float(run["knobs"]["D"]),
-                            deposit="largest")
+    beside = beside_fits(summary, lambda run, b: b["deposit_L"] / float(run["knobs"]["D"]))
     groups = fits["groups"]
     K = fits["through_origin"]
     f_a_groups = [([p[2] for p in ps if np.isfinite(p[2])],) * 2 for ps in points]
@@ -50,7 +49,7 @@ def analyze(summary, out_dir):
         ax.plot(x, y, "o", ms=4, label=f"D = {D:.2f}")
     top = max([max(g[0]) for g in groups if len(g[0])] or [1.0])
     xs = np.linspace(0, top, 2)
-    draw_largest(ax, largest)
+    draw_beside(ax, beside)
     draw_fits(ax, fits, top, PAPER_K, "paper K")
     if np.isfinite(f_a[0]):
         ax.plot(xs, 4 * f_a[0] * xs, "C4:", label=f"theory 4 f_a, f_a = {fmt(*f_a)} P_out")
@@ -59,8 +58,8 @@ def analyze(summary, out_dir):
     ax.legend(fontsize=7, ncol=2)
     return result(summary, "porediameter", "K in P = K L_dep / D; theory 4 f_a",
                   f"{PAPER_K} +- 0.04; f_a = K/4 = {PAPER_K / 4:.3g}",
-                  f"K {fits_text(fits)}; f_a = {fmt(*f_a)}; K {largest_text(largest)}",
+                  f"K {fits_text(fits)}; f_a = {fmt(*f_a)}; K {beside_text(beside)}",
                   save(fig, out_dir, "porediameter"),
                   K=K, K_excess=fits["excess_through_origin"], slope=fits["slope"],
                   intercept=fits["intercept"], f_a=f_a,
-                  largest_in_window={k: largest[k] for k in ("excess_through_origin", "pearson")})
+                  **beside_results(beside))

@@ -4,25 +4,26 @@ the paper's P_crit = sigma_c L_dep) and the Pearson coefficient (paper: 0.27(1),
 
 A line through 0 on the total P is dominated by the clean pore's own loss P_0 when the
 deposits are small (P_0 / L_dep whatever the physics), so the coefficient is also fitted on
-P - P_0 and with an intercept (figures.common.pressure_fits); beside the records' deposit
-(the median over the burst window), the fit on the largest deposit in that window."""
+P - P_0 and with an intercept (figures.common.pressure_fits), on the deposit every figure
+counts (figures.common.deposit_before_release), and beside it the median and the largest
+deposit of the burst window."""
 from fit_stats import fmt
-from figures.common import (draw_fits, draw_largest, fits_text, largest_text, plt, pressure_fits,
-                            result, save)
+from figures.common import (beside_fits, beside_results, beside_text, draw_beside, draw_fits, fits_text, plt,
+                            pressure_fits, result, save)
 
 PAPER_COEFFICIENT, PAPER_PEARSON = 0.27, 0.91
 
 
 def analyze(summary, out_dir):
     fits = pressure_fits(summary, lambda run, b: b["deposit_L"])
-    largest = pressure_fits(summary, lambda run, b: b["deposit_L"], deposit="largest")
+    beside = beside_fits(summary, lambda run, b: b["deposit_L"])
     groups = fits["groups"]
     fig, ax = plt.subplots(figsize=(6, 4.5))
     runs = [run for run in summary["runs"] if run["state"] == "done"]
     for run, (x, y) in zip(runs, groups):
         ax.plot(x, y, "o", ms=4, label=f"L = {float(run['knobs']['Lp']):.2f}")
     top = max([max(x) for x, _ in groups if len(x)] or [1.0])
-    draw_largest(ax, largest)
+    draw_beside(ax, beside)
     draw_fits(ax, fits, top, PAPER_COEFFICIENT)
     ax.set_xlabel("L_dep of the deposit the burst tore off [d]")
     ax.set_ylabel("P_peak [P_out]")
@@ -31,8 +32,8 @@ def analyze(summary, out_dir):
     ax.legend(fontsize=7, ncol=2)
     return result(summary, "porelength", "c in P = c L_dep; Pearson",
                   f"{PAPER_COEFFICIENT}(1); {PAPER_PEARSON}(1)",
-                  f"{fits_text(fits)}; Pearson {fmt(*fits['pearson'])}; {largest_text(largest)}",
+                  f"{fits_text(fits)}; Pearson {fmt(*fits['pearson'])}; {beside_text(beside)}",
                   save(fig, out_dir, "porelength"), coefficient=fits["through_origin"],
                   excess_coefficient=fits["excess_through_origin"], slope=fits["slope"],
                   intercept=fits["intercept"], pearson=fits["pearson"],
-                  largest_in_window={k: largest[k] for k in ("excess_through_origin", "pearson")})
+                  **beside_results(beside))
