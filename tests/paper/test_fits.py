@@ -241,6 +241,30 @@ def add_sliding_deposits(run, peaks, fulls, p0):
                 f.write(" ".join(f"{row[k]:.12g}" for k in names) + "\n")
 
 
+class DepositBeforeRelease(unittest.TestCase):
+    """The figures' deposit: the thermo row a fifth of the burst window before the peak. A
+    deposit released a tenth of the window before its peak (as measured) is counted whole; one
+    released earlier than a fifth is counted as what is left of it then."""
+
+    @staticmethod
+    def columns(peak, full, released, window=100000, step=1000):
+        steps = list(range(peak - 2 * window, peak + 1, step))
+        counts = [full if s < peak - released * window else 1 for s in steps]
+        return {"Step": steps, "pore[7]": counts, "pore[6]": [n / 2 for n in counts],
+                "pore[8]": [n / 20 for n in counts]}
+
+    def test_a_deposit_released_a_tenth_of_the_window_before_its_peak_counts_whole(self):
+        columns = self.columns(300000, 29, released=0.1)
+        self.assertEqual(common.deposit_before_release(columns, 300000, 100000), (29, 14.5, 1.45))
+        # the row at or before 300 000 - 20 000, between rows: the one before
+        self.assertEqual(common.deposit_before_release(columns, 300500, 100000), (29, 14.5, 1.45))
+
+    def test_one_released_earlier_counts_what_is_left(self):
+        columns = self.columns(300000, 29, released=0.3)
+        self.assertEqual(common.deposit_before_release(columns, 300000, 100000), (1, 0.5, 0.05))
+        self.assertIsNone(common.deposit_before_release(columns, 10 ** 7, 100))  # no row in the window
+
+
 class LargestDepositInTheWindow(unittest.TestCase):
     """Beside the record's median, the largest deposit in the burst window: a deposit that
     slid out of the count for more than half of the window is lost by the median and kept by
