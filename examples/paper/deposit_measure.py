@@ -11,8 +11,10 @@ count under the run's bound times 1/4, 1/2, 2, 4, 8 and 16. From them this scrip
     particles only) and of the unbonded ones in the region, and where the wall-bonded ones
     separate into resting deposits and moving particles (the valley between the two modes);
   - per bound: the count at each burst's peak against the count a tenth of the burst
-    window before it (a bound that drops a creeping deposit makes them disagree), and the
-    paper's law fitted to the count at the peak: K in P - P_0 = K L_dep / D, Pearson;
+    window before it (a bound that drops a moving deposit makes them disagree), the median
+    count at several times before the peak, and the paper's law P - P_0 = K L_dep / D
+    fitted to the deposit before release (a fifth of the window before the peak, the
+    figures' measure) and, beside it, to the count at the peak: K and Pearson;
   - the pressure loss at the peaks between the box's open faces (f_pore[16]) and across the
     pore (f_pore[27], "on both sides of the pore", as the paper measures it).
 
@@ -31,6 +33,7 @@ import numpy as np
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from fit_stats import bootstrap, fmt, pearson, slope_through_origin  # noqa: E402
 from study_io import burst_window_dem_steps, bursts, read_knobs, thermo  # noqa: E402
+from figures.common import RELEASE_LEAD  # noqa: E402
 
 # f_pore[28 + i]: the deposited count with the bound times LADDER[i] (fix lbm/pore's doc).
 LADDER = (0.25, 0.5, 2.0, 4.0, 8.0, 16.0)
@@ -118,16 +121,24 @@ def analyse(run_dir):
                   mean_deposited_volume=mean_volume, lead_dem_steps=lead, bounds={})
     peaks = [row_at_or_before(steps, b["step"]) for b in rows]
     befores = [row_at_or_before(steps, b["step"] - lead) for b in rows]
+    releases = [row_at_or_before(steps, b["step"] - RELEASE_LEAD * window) for b in rows]
     P = np.array([b["P_peak"] for b in rows])
     for factor, name in sorted(count_columns(columns).items()):
         c = np.asarray(columns[name], float)
         at_peak = c[peaks] if rows else np.array([])
         before = c[befores] if rows else np.array([])
-        x = at_peak * mean_volume / area / D  # L_dep / D
+        released = c[releases] if rows else np.array([])
+
+        def law(counts):
+            """K on P - P_0 through 0 and Pearson on P, against L_dep / D of `counts`."""
+            x = counts * mean_volume / area / D
+            return (bootstrap([([xi], [yi]) for xi, yi in zip(x, P - p0)], slope_through_origin),
+                    bootstrap([([xi], [yi]) for xi, yi in zip(x, P)], pearson))
         # the median count over the bursts at leads of 0 ... 0.4 burst windows before the peak
         by_lead = {f"{q:g}": float(np.median(c[[row_at_or_before(steps, b["step"] - q * window) for b in rows]]))
                    for q in LEADS} if rows else {}
-        singles = [([xi], [yi]) for xi, yi in zip(x, P - p0)]
+        K, r = law(released)
+        K_peak, r_peak = law(at_peak)
         result["bounds"][str(factor)] = dict(
             factor=factor,
             count_at_peak_median=float(np.median(at_peak)) if len(at_peak) else np.nan,
@@ -136,8 +147,8 @@ def analyse(run_dir):
             # deposit slid out of the count before the peak
             collapsed=int(np.sum(at_peak < 0.5 * before)),
             median_count_by_lead=by_lead,
-            K=bootstrap(singles, slope_through_origin),
-            pearson=bootstrap([([xi], [yi]) for xi, yi in zip(x, P)], pearson))
+            count_before_release_median=float(np.median(released)) if len(released) else np.nan,
+            K=K, pearson=r, K_at_peak=K_peak, pearson_at_peak=r_peak)
     if "pore[27]" in columns and rows:
         faces = np.asarray(columns["pore[16]"], float)[peaks]
         across = np.asarray(columns["pore[27]"], float)[peaks]
@@ -185,12 +196,14 @@ def plot(result, run_dir, out_png):
     plt.close(fig)
 
 
-def table(result):
-    lines = ["| bound / 0.1 u_in | count at peak (median) | a tenth of a window before | collapsed | "
-             "K on P - P_0 | Pearson |", "|---|---|---|---|---|---|"]
+def table(result, base=1.0):
+    """The bounds as multiples of `base` (a factor of the run's own deposit_speed)."""
+    lines = ["| bound | count at the peak | a tenth of a window before | collapsed | before release | "
+             "K on P - P_0 (before release) | Pearson | K at the peak | Pearson |", "|---" * 9 + "|"]
     for b in result["bounds"].values():
-        lines.append(f"| {b['factor']:g} | {b['count_at_peak_median']:.0f} | {b['count_before_median']:.0f} | "
-                     f"{b['collapsed']} of {result['bursts']} | {fmt(*b['K'])} | {fmt(*b['pearson'])} |")
+        lines.append(f"| x {b['factor'] / base:g} | {b['count_at_peak_median']:.0f} | {b['count_before_median']:.0f} | "
+                     f"{b['collapsed']} of {result['bursts']} | {b['count_before_release_median']:.0f} | "
+                     f"{fmt(*b['K'])} | {fmt(*b['pearson'])} | {fmt(*b['K_at_peak'])} | {fmt(*b['pearson_at_peak'])} |")
     return "\n".join(lines)
 
 
@@ -198,6 +211,9 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("run_dir")
     parser.add_argument("--out", help="folder for the results (default: the run's)")
+    parser.add_argument("--relative-to", type=float, default=1.0,
+                        help="give the bounds as multiples of this factor of the run's deposit_speed "
+                             "(4 for a run made at 0.1 u_in = 2.5e-4, to read them against 1e-3)")
     args = parser.parse_args()
     out = args.out or args.run_dir
     os.makedirs(out, exist_ok=True)
@@ -208,10 +224,10 @@ def main():
         plot(result, args.run_dir, os.path.join(out, "deposit_speeds.png"))
         print(f"valley of the wall-bonded speeds: {result['speeds']['valley_cells_per_fluid_step']} "
               f"lattice cells per fluid step")
-    print(table(result))
+    print(table(result, args.relative_to))
     print("median count at leads before the peak (burst windows): " + ", ".join(f"{q:g}" for q in LEADS))
     for b in result["bounds"].values():
-        print(f"  bound x {b['factor']:g}: " + " ".join(f"{v:.0f}" for v in b["median_count_by_lead"].values()))
+        print(f"  bound x {b['factor'] / args.relative_to:g}: " + " ".join(f"{v:.0f}" for v in b["median_count_by_lead"].values()))
     if "pressure_at_peaks" in result:
         p = result["pressure_at_peaks"]
         print(f"pressure loss at the peaks: across the pore / between the faces, median "

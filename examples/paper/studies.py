@@ -43,7 +43,7 @@ SIZES = {
     # quick and paper: 2000 fluid steps of warm-up, past the start-up transient of the flow
     "quick": dict(cells_per_d=5, steps=2000000, warmup=200000, thermo_every=2000, vtk_every=0,
                   **SMOKE_REGIME),
-    "paper": dict(cells_per_d=7.1, steps=100000000, warmup=200000, thermo_every=10000,
+    "paper": dict(cells_per_d=7.1, steps=100000000, warmup=200000, thermo_every=1000,
                   vtk_every=0, **PAPER_REGIME),
 }
 
