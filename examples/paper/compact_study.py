@@ -2,7 +2,7 @@
 """Copies what a study's evidence needs into a small folder that can be kept in the
 repository (a study's own folder holds restart files and fluid checkpoints of tens of MB):
 summary.txt, results.json and the plots, the analysis's table if any, and per run its
-bursts.txt and the thermo columns the analyses read (thermo.csv, every `every`-th row and
+bursts.txt, its deposit speed survey (deposit_speeds.txt) if any, and the thermo columns the analyses read (thermo.csv, every `every`-th row and
 every row from a burst's window before its peak, BURST_WINDOW fluid steps, to half a window
 after it), with the ERROR line of a run that stopped. analyze.py reads the compacted folder
 as it reads the study (study_io).
@@ -20,8 +20,9 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import study_io  # noqa: E402
 from ensemble import run_state  # noqa: E402
 
+# pore[27]: P across the pore; pore[28-33]: the deposited count under the scaled speed bounds
 COLUMNS = ("Step", "Atoms", "pore[16]", "pore[17]", "pore[7]", "pore[6]", "pore[8]", "pore[10]",
-           "walls[2]", "pore[14]", "pore[18]")
+           "walls[2]", "pore[14]", "pore[18]", "pore[27]") + tuple(f"pore[{i}]" for i in range(28, 34))
 
 
 def compact(study, dest, every=10):
@@ -39,7 +40,7 @@ def compact(study, dest, every=10):
         name = os.path.basename(run)
         out = os.path.join(dest, "runs", name)
         os.makedirs(out, exist_ok=True)
-        for keep in ("bursts.txt", "knobs.json"):
+        for keep in ("bursts.txt", "knobs.json", "deposit_speeds.txt"):
             if os.path.exists(os.path.join(run, keep)):
                 shutil.copy(os.path.join(run, keep), out)
         state, reason = run_state(run)
