@@ -58,8 +58,8 @@ def read_thermo_blocks(path):
                 continue
             try:
                 blocks[-1][1].append([float(w) for w in words])
-            except ValueError:
-                header = None
+            except ValueError:  # a message of as many words as the header (a pair style's
+                continue        # note at a run's start, stray bytes): not a row, the block goes on
     return [(h, rows) for h, rows in blocks if rows]
 
 

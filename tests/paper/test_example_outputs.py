@@ -213,6 +213,19 @@ class PeakSnapshot(unittest.TestCase):
         self.assertEqual(tuple(times), (4000, 8000, 10000))
 
 
+class ThermoBlocks(unittest.TestCase):
+    def test_a_message_as_long_as_the_header_does_not_end_the_block(self):
+        with tempfile.TemporaryDirectory() as work:
+            log = os.path.join(work, "log.liggghts")
+            with open(log, "w") as f:
+                f.write("Step Atoms pore[16]\n100 1 0.1\n")
+                f.write("note: three words\n")  # as many words as the header, not numbers
+                f.write("200 1 0.2\nLoop time of 1 on 1 procs\n")
+            header, rows = plot_pressure.read_thermo(log)
+        self.assertEqual(header, ["Step", "Atoms", "pore[16]"])
+        self.assertEqual(rows, [[100.0, 1.0, 0.1], [200.0, 1.0, 0.2]])
+
+
 class BurstSummary(unittest.TestCase):
     def run_summary(self, work, burst_rows, header=BURST_HEADER):
         warm, run = thermo_run()
