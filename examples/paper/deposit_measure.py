@@ -12,9 +12,10 @@ count under the run's bound times 1/4, 1/2, 2, 4, 8 and 16. From them this scrip
     separate into resting deposits and moving particles (the valley between the two modes);
   - per bound: the count at each burst's peak against the count a tenth of the burst
     window before it (a bound that drops a moving deposit makes them disagree), the median
-    count at several times before the peak, and the paper's law P - P_0 = K L_dep / D
-    fitted to the deposit before release (a fifth of the window before the peak, the
-    figures' measure) and, beside it, to the count at the peak: K and Pearson;
+    count at several times before the peak, how far the window's largest count lies above
+    its median over the window's first 60 % (before any release: the count's fluctuation),
+    and the paper's law P - P_0 = K L_dep / D fitted to the largest count in the window
+    (the figures' measure) and, beside it, to the count at the peak: K and Pearson;
   - the pressure loss at the peaks between the box's open faces (f_pore[16]) and across the
     pore (f_pore[27], "on both sides of the pore", as the paper measures it).
 
@@ -33,7 +34,6 @@ import numpy as np
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from fit_stats import bootstrap, fmt, pearson, slope_through_origin  # noqa: E402
 from study_io import burst_window_dem_steps, bursts, read_knobs, thermo  # noqa: E402
-from figures.common import RELEASE_LEAD  # noqa: E402
 
 # f_pore[28 + i]: the deposited count with the bound times LADDER[i] (fix lbm/pore's doc).
 LADDER = (0.25, 0.5, 2.0, 4.0, 8.0, 16.0)
@@ -121,13 +121,15 @@ def analyse(run_dir):
                   mean_deposited_volume=mean_volume, lead_dem_steps=lead, bounds={})
     peaks = [row_at_or_before(steps, b["step"]) for b in rows]
     befores = [row_at_or_before(steps, b["step"] - lead) for b in rows]
-    releases = [row_at_or_before(steps, b["step"] - RELEASE_LEAD * window) for b in rows]
+    windows = [(steps >= b["step"] - window) & (steps <= b["step"]) for b in rows]
+    early = [(steps >= b["step"] - window) & (steps <= b["step"] - 0.4 * window) for b in rows]
     P = np.array([b["P_peak"] for b in rows])
     for factor, name in sorted(count_columns(columns).items()):
         c = np.asarray(columns[name], float)
         at_peak = c[peaks] if rows else np.array([])
         before = c[befores] if rows else np.array([])
-        released = c[releases] if rows else np.array([])
+        largest = np.array([c[w].max() if w.any() else np.nan for w in windows])
+        excess = np.array([c[w].max() - np.median(c[w]) for w in early if w.any()])
 
         def law(counts):
             """K on P - P_0 through 0 and Pearson on P, against L_dep / D of `counts`."""
@@ -137,7 +139,7 @@ def analyse(run_dir):
         # the median count over the bursts at leads of 0 ... 0.4 burst windows before the peak
         by_lead = {f"{q:g}": float(np.median(c[[row_at_or_before(steps, b["step"] - q * window) for b in rows]]))
                    for q in LEADS} if rows else {}
-        K, r = law(released)
+        K, r = law(largest)
         K_peak, r_peak = law(at_peak)
         result["bounds"][str(factor)] = dict(
             factor=factor,
@@ -147,7 +149,10 @@ def analyse(run_dir):
             # deposit slid out of the count before the peak
             collapsed=int(np.sum(at_peak < 0.5 * before)),
             median_count_by_lead=by_lead,
-            count_before_release_median=float(np.median(released)) if len(released) else np.nan,
+            largest_in_window_median=float(np.median(largest)) if len(largest) else np.nan,
+            # before any release: the largest count above the median, over the bursts
+            early_excess_median=float(np.median(excess)) if len(excess) else np.nan,
+            early_excess_max=float(np.max(excess)) if len(excess) else np.nan,
             K=K, pearson=r, K_at_peak=K_peak, pearson_at_peak=r_peak)
     if "pore[27]" in columns and rows:
         faces = np.asarray(columns["pore[16]"], float)[peaks]
@@ -198,11 +203,13 @@ def plot(result, run_dir, out_png):
 
 def table(result, base=1.0):
     """The bounds as multiples of `base` (a factor of the run's own deposit_speed)."""
-    lines = ["| bound | count at the peak | a tenth of a window before | collapsed | before release | "
-             "K on P - P_0 (before release) | Pearson | K at the peak | Pearson |", "|---" * 9 + "|"]
+    lines = ["| bound | count at the peak | a tenth of a window before | collapsed | largest in the window | "
+             "its excess before release (median, max) | K on P - P_0 (largest) | Pearson (largest) | "
+             "K at the peak | Pearson at the peak |", "|---" * 10 + "|"]
     for b in result["bounds"].values():
         lines.append(f"| x {b['factor'] / base:g} | {b['count_at_peak_median']:.0f} | {b['count_before_median']:.0f} | "
-                     f"{b['collapsed']} of {result['bursts']} | {b['count_before_release_median']:.0f} | "
+                     f"{b['collapsed']} of {result['bursts']} | {b['largest_in_window_median']:.0f} | "
+                     f"{b['early_excess_median']:.0f}, {b['early_excess_max']:.0f} | "
                      f"{fmt(*b['K'])} | {fmt(*b['pearson'])} | {fmt(*b['K_at_peak'])} | {fmt(*b['pearson_at_peak'])} |")
     return "\n".join(lines)
 

@@ -8,14 +8,12 @@ Then one line per erosive burst of the burst file (fix lbm/pore's burst_file, bu
 beside the log unless --bursts names another): its fluid step, P_peak and P_after in P_out
 and the deposit it tore off, in particles and in volume (the script's length unit cubed: d^3
 in in.pore), by each measure there is, each named, the figures' own first:
-  before release the deposit at rest a fifth of the burst window before the peak (the thermo
-                 row there: f_pore[7], f_pore[6]); every figure of the paper counts this one
-                 (doc/paper.md, "The deposit"; examples/paper/figures/common.py);
+  window largest the thermo row with the largest deposited count in the burst window up to
+                 the peak (f_pore[7], f_pore[6]): the deposit before its release, which every
+                 figure of the paper counts (doc/paper.md, "The deposit";
+                 examples/paper/figures/common.py);
   window median  the medians of the deposited count and V_dep over the burst window up to the
-                 peak (the record's deposit_count, deposit_V; the fix's doc: use these for the
-                 deposit a burst carried);
-  window largest the thermo row with the largest deposited count in that window (f_pore[7],
-                 f_pore[6]; the figures' "largest" reading, examples/paper/figures/common.py);
+                 peak (the record's deposit_count, deposit_V);
   at the peak    the record's count_before and V_dep (a deposit that has begun to slide has
                  dropped out of them), with count_after at the minimum.
 A burst file written before the records had the window medians says so on each line.
@@ -65,16 +63,15 @@ def burst_window_dem_steps(log, n_dem, dt_dem):
     return 1000 * n_dem if window is None else window / dt_dem
 
 
-def deposit_in_window(measure, columns, peak_step, window_steps):
-    """(count, V_dep) of the burst window's thermo rows by `measure` of
-    examples/paper/figures/common.py ("before_release" or "largest"), or None."""
+def largest_in_window(columns, peak_step, window_steps):
+    """(count, V_dep) of the thermo row with the largest deposited count in the window up to
+    the peak (examples/paper/figures/common.py's largest_deposit_before), or None."""
     try:
-        from figures import common
+        from figures.common import largest_deposit_before
     except ImportError:  # numpy or matplotlib missing
         return None
-    take = {"before_release": common.deposit_before_release, "largest": common.largest_deposit_before}[measure]
-    deposit = take(columns, peak_step, window_steps)
-    return None if deposit is None else deposit[:2]
+    largest = largest_deposit_before(columns, peak_step, window_steps)
+    return None if largest is None else largest[:2]
 
 
 def number(value, digits=4):
@@ -101,15 +98,12 @@ def burst_lines(log, bursts_path, fix="pore"):
             median = f"window median {b['deposit_count']:.4g}, {number(b.get('deposit_V'))}"
         else:
             median = "window median not recorded (a burst file older than its columns)"
-        named = {}
-        for measure, label in (("before_release", "before release"), ("largest", "window largest")):
-            d = deposit_in_window(measure, columns, step, window)
-            named[measure] = (f"{label} {d[0]}, {number(d[1])}" if d
-                              else f"{label} n/a (no thermo rows in the window)")
+        largest = largest_in_window(columns, step, window)
+        largest = (f"window largest {largest[0]}, {number(largest[1])}" if largest
+                   else "window largest n/a (no thermo rows in the window)")
         lines.append(
             f"burst {k}: {where}, P_peak {b['P_peak']:.4g} P_out, P_after {b['P_after']:.4g} P_out "
-            f"(fell {100 * drop:.0f} %); deposit torn off: {named['before_release']} | {median} | "
-            f"{named['largest']} | at the peak "
+            f"(fell {100 * drop:.0f} %); deposit torn off: {largest} | {median} | at the peak "
             f"{b['count_before']:.0f}, {number(b['V_dep'])}; at the minimum {b['count_after']:.0f} particles")
     return lines
 

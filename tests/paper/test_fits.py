@@ -112,7 +112,7 @@ class FiguresCompareLikeWithLike(unittest.TestCase):
         self.assertAlmostEqual(common.clean_pressure(self.runs[1]), 0.06, places=12)
 
     def test_the_three_fits_measure_what_they_say(self):
-        fits = common.pressure_fits(self.summary, lambda run, b: b["L_dep"])
+        fits = common.pressure_fits(self.summary, lambda run, b: b["L_dep"], deposit="median")
         self.assertAlmostEqual(fits["excess_through_origin"][0], self.c, places=9)
         self.assertAlmostEqual(fits["excess_through_origin"][1], self.c, places=9)  # no spread
         # Through the origin on P, the clean loss inflates the slope.
@@ -135,7 +135,7 @@ class FiguresCompareLikeWithLike(unittest.TestCase):
                                places=12)
         # V_dep = L_dep pi D^2 / 4, so V_dep / D^3 = L_dep pi / (4 D) and against P - P_0 the
         # slope is c 4 D / pi.
-        fits = common.pressure_fits(self.summary, dropvol.per_cube_of_diameter)
+        fits = common.pressure_fits(self.summary, dropvol.per_cube_of_diameter, deposit="median")
         self.assertAlmostEqual(fits["excess_through_origin"][0], 4 * self.c * D / math.pi, places=9)
 
     def test_one_run_resamples_its_bursts_and_says_so(self):
@@ -149,7 +149,7 @@ class FiguresCompareLikeWithLike(unittest.TestCase):
             rows.append((length, length, 0.07 + self.c * length + rng.gauss(0, 0.05)))
         one = write_run(os.path.join(self.tmp.name, "one"), 0.07, rows)
         summary = dict(self.summary, runs=[one], finished=1)
-        fits = common.pressure_fits(summary, lambda run, b: b["L_dep"])
+        fits = common.pressure_fits(summary, lambda run, b: b["L_dep"], deposit="median")
         self.assertEqual(fits["unit"], "bursts")
         value, low, high = fits["excess_through_origin"]
         self.assertLess(low, self.c)
@@ -159,7 +159,7 @@ class FiguresCompareLikeWithLike(unittest.TestCase):
         self.assertIn("over the bursts of one run", common.fits_text(fits))
         # One burst alone has no interval.
         lone = write_run(os.path.join(self.tmp.name, "lone"), 0.07, rows[:1])
-        fits = common.pressure_fits(dict(self.summary, runs=[lone], finished=1), lambda run, b: b["L_dep"])
+        fits = common.pressure_fits(dict(self.summary, runs=[lone], finished=1), lambda run, b: b["L_dep"], deposit="median")
         self.assertTrue(math.isnan(fits["through_origin"][1]))
 
     def test_figure_results_name_all_three_fits(self):
@@ -167,7 +167,8 @@ class FiguresCompareLikeWithLike(unittest.TestCase):
         out = os.path.join(self.tmp.name, "out")
         os.makedirs(out)
         r = porelength.analyze(self.summary, out)
-        self.assertAlmostEqual(r["excess_coefficient"][0], self.c, places=9)
+        # the synthetic runs' thermo rows hold no deposit: the records' median measures them
+        self.assertAlmostEqual(r["deposit_median"]["excess_through_origin"][0], self.c, places=9)
         for words in ("through 0", "P - P_0", "intercept"):
             self.assertIn(words, r["ours"])
         self.assertTrue(os.path.getsize(r["plot"]) > 5000)
@@ -209,7 +210,8 @@ class BurstDeposit(unittest.TestCase):
             summary = dict(runs=[today], finished=1, study="porelength", size="tiny", core_hours=0.0)
             out = os.path.join(tmp, "out")
             os.makedirs(out)
-            self.assertAlmostEqual(porelength.analyze(summary, out)["excess_coefficient"][0], c, places=9)
+            median = porelength.analyze(summary, out)["deposit_median"]
+            self.assertAlmostEqual(median["excess_through_origin"][0], c, places=9)
 
 
 def sliding_deposit(peak, full, window=100000, step=1000):
@@ -239,30 +241,6 @@ def add_sliding_deposits(run, peaks, fulls, p0):
                 row.update({"Step": step, "pore[16]": p0, "pore[17]": p0, "pore[7]": n,
                             "pore[6]": n / 2, "pore[8]": n / 20})
                 f.write(" ".join(f"{row[k]:.12g}" for k in names) + "\n")
-
-
-class DepositBeforeRelease(unittest.TestCase):
-    """The figures' deposit: the thermo row a fifth of the burst window before the peak. A
-    deposit released a tenth of the window before its peak (as measured) is counted whole; one
-    released earlier than a fifth is counted as what is left of it then."""
-
-    @staticmethod
-    def columns(peak, full, released, window=100000, step=1000):
-        steps = list(range(peak - 2 * window, peak + 1, step))
-        counts = [full if s < peak - released * window else 1 for s in steps]
-        return {"Step": steps, "pore[7]": counts, "pore[6]": [n / 2 for n in counts],
-                "pore[8]": [n / 20 for n in counts]}
-
-    def test_a_deposit_released_a_tenth_of_the_window_before_its_peak_counts_whole(self):
-        columns = self.columns(300000, 29, released=0.1)
-        self.assertEqual(common.deposit_before_release(columns, 300000, 100000), (29, 14.5, 1.45))
-        # the row at or before 300 000 - 20 000, between rows: the one before
-        self.assertEqual(common.deposit_before_release(columns, 300500, 100000), (29, 14.5, 1.45))
-
-    def test_one_released_earlier_counts_what_is_left(self):
-        columns = self.columns(300000, 29, released=0.3)
-        self.assertEqual(common.deposit_before_release(columns, 300000, 100000), (1, 0.5, 0.05))
-        self.assertIsNone(common.deposit_before_release(columns, 10 ** 7, 100))  # no row in the window
 
 
 class LargestDepositInTheWindow(unittest.TestCase):
@@ -297,7 +275,7 @@ class LargestDepositInTheWindow(unittest.TestCase):
             largest = common.pressure_fits(summary, lambda r, b: b["deposit_L"], deposit="largest")
             self.assertAlmostEqual(largest["excess_through_origin"][0], c, places=9)
             self.assertAlmostEqual(largest["pearson"][0], 1.0, places=9)
-            median = common.pressure_fits(summary, lambda r, b: b["deposit_L"])
+            median = common.pressure_fits(summary, lambda r, b: b["deposit_L"], deposit="median")
             self.assertTrue(math.isnan(median["pearson"][0]))  # every record says 0.05: no spread
             from figures import calibration
             rows = calibration.bursts_with_deposits(run, common.thermo(run["folder"]))

@@ -47,13 +47,11 @@ def clean_pressure(run, share=0.25):
 
 
 def largest_deposit_before(columns, peak_step, window_steps):
-    """The deposit as it stood before it began to slide: (count, V_dep, L_dep) of the thermo
-    row with the largest deposited count (f_pore[7], f_pore[6], f_pore[8]) among those of the
-    `window_steps` DEM steps up to `peak_step`; None without such rows. The burst record's
-    median over the same window loses a deposit that slid out of the count (its particles
-    faster than deposit_speed) for more than half of the window; the paper counts the
-    particles inside the pore radius with no speed bound, so the deposit at its largest is
-    the nearer reading of the paper's V_dep, and the figures give both."""
+    """The deposit before its release, the figures' measure (DEPOSIT_MEASURES): (count,
+    V_dep, L_dep) of the thermo row with the largest deposited count (f_pore[7], f_pore[6],
+    f_pore[8]) among those of the `window_steps` DEM steps up to `peak_step`; None without
+    such rows. The burst record's median over the same window loses a deposit released more
+    than half a window before the peak."""
     steps = np.asarray(columns.get("Step", []), float)
     inside = np.flatnonzero((steps >= peak_step - window_steps) & (steps <= peak_step))
     if not len(inside) or "pore[7]" not in columns:
@@ -63,50 +61,24 @@ def largest_deposit_before(columns, peak_step, window_steps):
     return (int(round(columns["pore[7]"][k])), at[0], at[1])
 
 
-# The deposit a burst tears off, as every figure counts it (doc/paper.md, "The deposit"): the
-# particles at rest (bonded, inside the pore radius, slower than in.pore's deposit_speed,
-# 0.1408 d per 1000 time units) a fifth of the burst window before the peak. A deposit is
-# released before the pressure peaks: over the last tenth of the window its particles pass
-# any speed bound up to 1.6 u_in and drop out of the count, while a fifth and two fifths of
-# the window before the peak the count is the same (the speed survey of the paper-length
-# scene, doc/paper.md).
-RELEASE_LEAD = 0.2  # burst windows before the peak
-
-
-def deposit_before_release(columns, peak_step, window_steps, lead=RELEASE_LEAD):
-    """(count, V_dep, L_dep) of the thermo row at or before peak_step - lead * window_steps
-    (f_pore[7], f_pore[6], f_pore[8]); None without a row in the window before the peak."""
-    steps = np.asarray(columns.get("Step", []), float)
-    at = peak_step - lead * window_steps
-    inside = np.flatnonzero((steps >= peak_step - window_steps) & (steps <= at))
-    if not len(inside) or "pore[7]" not in columns:
-        return None
-    k = inside[-1]
-    volume = [float(columns[c][k]) if c in columns else np.nan for c in ("pore[6]", "pore[8]")]
-    return (int(round(columns["pore[7]"][k])), volume[0], volume[1])
-
-
-def with_deposits(run, rows, measure, columns=None):
-    """Copies of a run's burst rows with their deposit (deposit_count, deposit_V, deposit_L) as
-    `measure` takes it from the run's thermo rows: "before_release" (deposit_before_release)
-    or "largest" (largest_deposit_before); a burst without rows in its window keeps the
-    record's median."""
-    take = {"before_release": deposit_before_release, "largest": largest_deposit_before}[measure]
-    columns = thermo(run["folder"]) if columns is None else columns
-    window = burst_window_dem_steps(run["folder"], run["knobs"])
-    out = []
-    for b in rows:
-        deposit = take(columns, b["step"], window)
-        out.append(b if deposit is None else
-                   dict(b, deposit_count=deposit[0], deposit_V=deposit[1], deposit_L=deposit[2]))
-    return out
+def at_the_peak(rows):
+    """Copies of burst rows whose deposit is the record's own at the peak (count_before,
+    V_dep, L_dep): the paper's words read literally ("V_dep at each pressure peak")."""
+    return [dict(b, deposit_count=b["count_before"], deposit_V=b["V_dep"], deposit_L=b["L_dep"]) for b in rows]
 
 
 def with_largest_deposits(run, rows, columns=None):
     """Copies of a run's burst rows whose deposit (deposit_count, deposit_V, deposit_L) is the
     largest in the window before the peak (largest_deposit_before, from the run's thermo
     rows); a burst without rows in its window keeps the record's median."""
-    return with_deposits(run, rows, "largest", columns)
+    columns = thermo(run["folder"]) if columns is None else columns
+    window = burst_window_dem_steps(run["folder"], run["knobs"])
+    out = []
+    for b in rows:
+        largest = largest_deposit_before(columns, b["step"], window)
+        out.append(b if largest is None else
+                   dict(b, deposit_count=largest[0], deposit_V=largest[1], deposit_L=largest[2]))
+    return out
 
 
 def resampled(groups):
@@ -119,27 +91,37 @@ def resampled(groups):
     return [([xi], [yi]) for x, y in groups for xi, yi in zip(x, y)], "bursts"
 
 
-DEPOSIT_MEASURES = ("before_release", "median", "largest")
+# The deposit a burst tears off, as every figure counts it (doc/paper.md, "The deposit"): the
+# largest count of particles at rest (bonded, inside the pore radius, slower than in.pore's
+# deposit_speed, 0.1408 d per 1000 time units) in the burst window before the peak. A deposit
+# is released before the pressure peaks, sooner or later from burst to burst, so no fixed time
+# reads it whole; under this bound the count at rest is steady until the release (its largest
+# exceeds its median over the window's first 60 % by 0 particles in the median burst), so its
+# largest is the deposit, not a fluctuation. The window's median and the count at the peak
+# are shown beside it.
+DEPOSIT_MEASURES = ("largest", "median", "peak")
 
 
-def pressure_fits(summary, x_of, deposit="before_release"):
+def pressure_fits(summary, x_of, deposit="largest"):
     """The fits of the peak pressure against x_of(run, burst), the same three for every
     figure so that like is compared with like: the paper's line through the origin on P, the
     same on the pressure the deposit adds, P - P_0 (P_0 = clean_pressure of each run), and a
     line with an intercept on P. Each value (value, low, high) with fit_stats.bootstrap's
     interval over runs (over bursts for a single run: `resampled`); also the Pearson
     coefficient, the per-run point groups and `unit`, what the intervals resample.
-    deposit: "before_release", the figures' measure (deposit_before_release); "median", the
-    burst records' deposit (the median over the burst window); or "largest", the largest
-    deposit in that window (largest_deposit_before)."""
+    deposit: "largest", the figures' measure (largest_deposit_before); "median", the burst
+    records' deposit (the median over the burst window); or "peak", the record's count at the
+    peak (at_the_peak)."""
     from fit_stats import bootstrap, intercept, pearson, slope, slope_through_origin
     if deposit not in DEPOSIT_MEASURES:
         raise ValueError(f"deposit must be one of {', '.join(DEPOSIT_MEASURES)}, not {deposit!r}")
     groups, excess = [], []
     for run in finished_runs(summary):
         rows = bursts(run["folder"])
-        if deposit != "median":
-            rows = with_deposits(run, rows, deposit)
+        if deposit == "largest":
+            rows = with_largest_deposits(run, rows)
+        elif deposit == "peak":
+            rows = at_the_peak(rows)
         p0 = clean_pressure(run)
         x = [x_of(run, b) for b in rows]
         groups.append((x, [b["P_peak"] for b in rows]))
@@ -165,7 +147,7 @@ def fits_text(fits):
 
 # The measures shown beside the figures' own, and how each is named on a plot.
 BESIDE = {"median": ("the median over the burst window", "s", "C7"),
-          "largest": ("the largest in the burst window", "o", "0.5")}
+          "peak": ("at the peak", "o", "0.5")}
 
 
 def beside_fits(summary, x_of):
@@ -182,7 +164,7 @@ def beside_text(beside):
 
 def beside_results(beside):
     """The other measures' fits for results.json."""
-    return {f"{m}_in_window": {k: f[k] for k in ("excess_through_origin", "pearson")} for m, f in beside.items()}
+    return {f"deposit_{m}": {k: f[k] for k in ("excess_through_origin", "pearson")} for m, f in beside.items()}
 
 
 def draw_beside(ax, beside):

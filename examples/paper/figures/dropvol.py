@@ -7,9 +7,9 @@ P = 16 f_a V_dep / (pi D^3)) the slope is 4 K / pi = 1.16 for V_dep in D^3 and K
 for V_dep in pore volumes (pi D^2 L / 4), but 0.027 for V_dep in d^3 (doc/references.md).
 So V_dep is plotted per D^3, the unit whose slope the paper's 1.15 matches, and the slope per
 pore volume is given beside it; each with the three fits of figures.common.pressure_fits, on the
-deposit every figure counts (figures.common.deposit_before_release; doc/paper.md, "The
-deposit"), and beside it (hollow markers) the median and the largest deposit of the burst
-window."""
+deposit every figure counts (figures.common.largest_deposit_before; doc/paper.md, "The
+deposit"), and beside it (hollow markers) the median over the burst window and the count at the
+peak."""
 import numpy as np
 
 from fit_stats import fmt

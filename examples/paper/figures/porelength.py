@@ -5,8 +5,8 @@ the paper's P_crit = sigma_c L_dep) and the Pearson coefficient (paper: 0.27(1),
 A line through 0 on the total P is dominated by the clean pore's own loss P_0 when the
 deposits are small (P_0 / L_dep whatever the physics), so the coefficient is also fitted on
 P - P_0 and with an intercept (figures.common.pressure_fits), on the deposit every figure
-counts (figures.common.deposit_before_release), and beside it the median and the largest
-deposit of the burst window."""
+counts (figures.common.largest_deposit_before), and beside it the median over the burst
+window and the count at the peak."""
 from fit_stats import fmt
 from figures.common import (beside_fits, beside_results, beside_text, draw_beside, draw_fits, fits_text, plt,
                             pressure_fits, result, save)
