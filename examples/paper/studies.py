@@ -234,7 +234,10 @@ def calibration(size):
     runs = []
     for seed in seeds:
         for u in velocities:
-            knobs = _base(size, seed=seed, u_lattice=u, thermo_extra="f_walls[2] f_pore[14]", **lengths)
+            # the deposit bound these runs were made with, a tenth of each one's inlet velocity
+            # (d per time unit: u_in = u_lattice / 7.1), so that the tables repeat
+            knobs = _base(size, seed=seed, u_lattice=u, thermo_extra="f_walls[2] f_pore[14]",
+                          deposit_speed=f"{0.1 * u / PAPER_CELLS_PER_D:.6g}", **lengths)
             knobs.update(scene(knobs["cells_per_d"]))
             if size != "tiny":
                 knobs["thermo_every"] = 1000
@@ -245,7 +248,8 @@ def calibration(size):
     for seed in seeds:
         for u in _counts(size, [], [0.00125], []):
             knobs = next(k for name, k in runs if name == f"u_0.0025_seed_{seed}")
-            runs.append((f"u_{u:g}_seed_{seed}", dict(knobs, u_lattice=u, steps=2 * knobs["steps"])))
+            runs.append((f"u_{u:g}_seed_{seed}", dict(knobs, u_lattice=u, steps=2 * knobs["steps"],
+                                                      deposit_speed=f"{0.1 * u / PAPER_CELLS_PER_D:.6g}")))
 
     def coarse(u, seed):
         """The same physical run at 5 cells per d (in.pore's acoustic scaling keeps the DEM

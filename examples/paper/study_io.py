@@ -20,9 +20,9 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 from plot_pressure import read_thermo  # noqa: E402  (the main example's log reader)
 
 # A burst file's columns (fix lbm/pore's burst_file). V_dep, L_dep and count_before are taken
-# at the peak; deposit_count, deposit_V and deposit_L are the deposit the burst tore off, the
-# medians over the burst window up to the peak (at the peak a sliding deposit has dropped out
-# of the count). Rows of files written before the last three existed have the first thirteen,
+# at the peak; deposit_count, deposit_V and deposit_L are the medians over the burst window
+# up to the peak (at the peak a sliding deposit has dropped out of the count; the figures take
+# the largest count in the window from the thermo rows: figures/common.py). Rows of files written before the last three existed have the first thirteen,
 # before wall_F, on_wall and P_pi_D2_4 the first ten.
 # The burst window of fix lbm/pore's detector (in.pore's default, in the paper's fluid steps):
 # the time up to a peak over which a burst record takes its deposit (the median count, V_dep

@@ -18,12 +18,14 @@ V_dep f_ID[6] (the paper relates the pressure peaks to V_dep), when the thermo b
 The bursts are those of the fix's burst file with `--bursts` (found every fluid step, with
 the deposit criterion); without it they are found on the thermo rows: a fall of the pressure
 loss by more than `--drop` (fraction of the preceding peak, default 10 %) within `--window`
-thermo rows (default 10: 1000 fluid steps in the example), followed to its minimum, by the
+thermo rows (default: the rows of 1000 fluid steps, the detector's window in in.pore, read
+off the log's thermo interval and DEM steps per fluid step), followed to its minimum, by the
 rules of fix lbm/pore's online detector (find_bursts). Prints each burst as
 `BURST step peak after drop_fraction` and writes the plot.
 """
 import argparse
 import re
+import statistics
 import sys
 
 
@@ -123,7 +125,7 @@ def run_timing(path):
     return None
 
 
-def load(log, fix="pore", column=None, bursts=None, drop=0.1, window=10):
+def load(log, fix="pore", column=None, bursts=None, drop=0.1, window=None):
     """What the plot shows, read from the log (and the burst file): a dict with the thermo
     steps, the pressure loss and its column, the x values (time, or DEM steps without the
     fix's setup line) and their label, the deposited count and volume as (column, values),
@@ -170,6 +172,9 @@ def load(log, fix="pore", column=None, bursts=None, drop=0.1, window=10):
                               P_peak=b["P_peak"] if in_p_out else pressure[nearest(b["step"])],
                               P_after=b["P_after"] if in_p_out else None))
     else:
+        if window is None:  # the rows of 1000 fluid steps (100 DEM steps each without the setup line)
+            interval = statistics.median(b - a for a, b in zip(steps, steps[1:])) if len(steps) > 1 else 1
+            window = max(1, round(1000 * (timing[0] if timing else 100) / max(interval, 1)))
         for peak, after in find_bursts(steps, pressure, drop, window):
             marks.append(dict(step=steps[peak], x_peak=x[peak], x_after=x[after],
                               P_peak=pressure[peak], P_after=pressure[after]))
@@ -239,8 +244,9 @@ def main(argv=None):
     parser.add_argument("--column", default=None, help="thermo column of the pressure loss")
     parser.add_argument("--drop", type=float, default=0.1,
                         help="fall, as a fraction of the preceding peak, that counts as a burst")
-    parser.add_argument("--window", type=int, default=10,
-                        help="thermo rows within which the fall must happen")
+    parser.add_argument("--window", type=int, default=None,
+                        help="thermo rows within which the fall must happen (default: those of "
+                             "1000 fluid steps)")
     parser.add_argument("--bursts", default=None,
                         help="the burst file fix lbm/pore wrote (burst_file): mark its bursts, "
                              "found every fluid step with the deposit criterion, instead of "

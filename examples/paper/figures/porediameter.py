@@ -9,7 +9,8 @@ import numpy as np
 
 from fit_stats import bootstrap, fmt
 from figures.common import (beside_fits, beside_results, beside_text, bursts, draw_beside, draw_fits,
-                            finished_runs, fits_text, p_out, plt, pressure_fits, resampled, result, save, thermo)
+                            finished_runs, fits_text, p_out, plt, pressure_fits, resampled, result, save, thermo,
+                            with_largest_deposits)
 
 PAPER_K = 0.91
 
@@ -22,7 +23,8 @@ def _points(run):
     steps = np.asarray(columns.get("Step", []))
     hold = np.asarray(columns.get("walls[2]", []))
     out = []
-    for b in bursts(run["folder"]):
+    # the deposit every figure counts (figures.common.largest_deposit_before), as K takes it
+    for b in with_largest_deposits(run, bursts(run["folder"]), columns):
         f_a = np.nan
         if b["deposit_L"] > 0 and "wall_F" in b:  # the burst record's own hold at the peak
             f_a = -b["wall_F"] / (np.pi * D * b["deposit_L"]) / unit
