@@ -147,7 +147,7 @@ def fits_text(fits):
 
 # The measures shown beside the figures' own, and how each is named on a plot.
 BESIDE = {"median": ("the median over the burst window", "s", "C7"),
-          "peak": ("at the peak", "o", "0.5")}
+          "peak": ("the count at the peak", "o", "0.5")}
 
 
 def beside_fits(summary, x_of):
