@@ -44,13 +44,17 @@ KINDS = ("bonded, touching the wall", "bonded to other particles only", "not bon
 
 def read_speeds(path):
     """(lower bin edges, counts[kind][bin] summed over the file's intervals, cells per length
-    unit) of a deposit_speeds file; bin 0 is 'slower than the first edge'."""
-    cells_per_unit, rows = np.nan, []
+    unit, time units per fluid step) of a deposit_speeds file; bin 0 is 'slower than the first
+    edge'. Files written before the header gave the fluid step: nan for it."""
+    cells_per_unit, time_per_step, rows = np.nan, np.nan, []
     with open(path) as f:
         for line in f:
             if line.startswith("#"):
                 if "cells per length unit" in line:
-                    cells_per_unit = float(line.split(";")[1].split()[0])
+                    words = line.split(";")[1].split()
+                    cells_per_unit = float(words[0])
+                    if "time units per" in line:
+                        time_per_step = float(words[words.index("and") + 1])
                 continue
             if line.strip():
                 rows.append([float(w) for w in line.split()])
@@ -59,7 +63,7 @@ def read_speeds(path):
     counts = np.array([rows[rows[:, 2] == k, 3:].sum(axis=0) for k in range(len(KINDS))])
     low, per_decade = -8, 10
     edges = np.array([0.0] + [10.0 ** (low + (b - 1) / per_decade) for b in range(1, bins)])
-    return edges, counts, cells_per_unit
+    return edges, counts, cells_per_unit, time_per_step
 
 
 def valley(edges, counts, lo=1e-6, hi=1e-1):
@@ -164,8 +168,12 @@ def analyse(run_dir):
             clean_faces=p0, clean_across_pore=clean_pressure(columns, warmup, "pore[27]"))
     speeds = os.path.join(run_dir, "deposit_speeds.txt")
     if os.path.exists(speeds):
-        edges, counts, cells = read_speeds(speeds)
-        result["speeds"] = dict(cells_per_length_unit=cells, lower_edges=edges.tolist(),
+        edges, counts, cells, time_per_step = read_speeds(speeds)
+        if not np.isfinite(time_per_step):  # in.pore's acoustic scaling: dt_f = 7.1 / cells_per_d
+            time_per_step = 7.1 / float(knobs.get("cells_per_d", 7.1))
+        bound = float(knobs["deposit_speed"]) * cells * time_per_step if "deposit_speed" in knobs else None
+        result["speeds"] = dict(cells_per_length_unit=cells, time_per_fluid_step=time_per_step,
+                                bound_cells_per_fluid_step=bound, lower_edges=edges.tolist(),
                                 counts={KINDS[k]: counts[k].tolist() for k in range(len(KINDS))},
                                 valley_cells_per_fluid_step=valley(edges, counts[0]))
     return result
@@ -188,9 +196,9 @@ def plot(result, run_dir, out_png):
     valley_speed = s["valley_cells_per_fluid_step"]
     if valley_speed:
         ax.axvline(valley_speed, color="k", ls=":", label=f"valley of the wall-bonded: {valley_speed:.2g}")
-    u = float(knobs.get("u_lattice", np.nan))
-    if np.isfinite(u):
-        ax.axvline(0.1 * u, color="0.5", ls="--", label=f"0.1 u_in = {0.1 * u:.2g}")
+    if s.get("bound_cells_per_fluid_step"):
+        ax.axvline(s["bound_cells_per_fluid_step"], color="0.5", ls="--",
+                   label=f"the run's deposit_speed: {s['bound_cells_per_fluid_step']:.2g}")
     ax.set_xscale("log")
     ax.set_xlabel("speed [lattice cells per fluid step]")
     ax.set_ylabel("share of the kind's samples per 0.1 decade")
@@ -220,7 +228,7 @@ def main():
     parser.add_argument("--out", help="folder for the results (default: the run's)")
     parser.add_argument("--relative-to", type=float, default=1.0,
                         help="give the bounds as multiples of this factor of the run's deposit_speed "
-                             "(4 for a run made at 0.1 u_in = 2.5e-4, to read them against 1e-3)")
+                             "(4 for a run made at a quarter of in.pore's bound)")
     args = parser.parse_args()
     out = args.out or args.run_dir
     os.makedirs(out, exist_ok=True)

@@ -81,7 +81,7 @@ void FixLbmPore::start_monitor() {
     keyword = "deposit_speeds";
     if (options_.deposit_speeds_every > 0)
       monitor_->write_deposit_speeds_to(comm->me == 0 ? options_.deposit_speeds_file : "",
-                                        options_.deposit_speeds_every, 1.0 / options_.dx, resumed);
+                                        options_.deposit_speeds_every, resumed);
   } catch (const std::runtime_error& e) {  // rank 0 only: stop from here
     lbm_pore::stop_on_this_rank(error, comm->me, screen, logfile,
                                 (std::string("fix lbm/pore: ") + keyword + ": " + e.what()).c_str());

@@ -92,11 +92,11 @@ TEST(DepositSpeeds, FileHasAHeaderAndOneRowPerKind) {
   counts[5] = 3.0;
   counts[std::size_t(2 * H::kBins + 7)] = 4.0;
   {
-    DepositSpeedFileWriter writer(path, 7.1, /*append=*/false);
+    DepositSpeedFileWriter writer(path, 7.1, 1.0, /*append=*/false);
     writer.write(1, 2000, counts);
   }
   {
-    DepositSpeedFileWriter writer(path, 7.1, /*append=*/true);  // a resumed run: no second header
+    DepositSpeedFileWriter writer(path, 7.1, 1.0, /*append=*/true);  // a resumed run: no second header
     writer.write(2001, 4000, counts);
   }
   std::ifstream in(path);
@@ -119,5 +119,5 @@ TEST(DepositSpeeds, FileHasAHeaderAndOneRowPerKind) {
   EXPECT_EQ(header, 5);
   EXPECT_EQ(rows, 6);
   std::remove(path.c_str());
-  EXPECT_THROW(DepositSpeedFileWriter("/nonexistent-dir/x.txt", 7.1, false), std::runtime_error);
+  EXPECT_THROW(DepositSpeedFileWriter("/nonexistent-dir/x.txt", 7.1, 1.0, false), std::runtime_error);
 }

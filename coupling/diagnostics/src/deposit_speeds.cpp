@@ -28,19 +28,26 @@ void DepositSpeedHistogram::add(const ParticleView& view, const std::vector<char
   }
 }
 
+void DepositSpeedHistogram::add(const DepositSpeedHistogram& other) {
+  for (int kind = 0; kind < kKinds; ++kind)
+    for (int b = 0; b < kBins; ++b) counts_[kind][std::size_t(b)] += other.counts_[kind][std::size_t(b)];
+}
+
+void DepositSpeedHistogram::clear() {
+  for (auto& counts : counts_) std::fill(counts.begin(), counts.end(), 0.0);
+}
+
 std::vector<double> DepositSpeedHistogram::take(const lbm::Communicator& comm) {
   std::vector<double> all;
   all.reserve(std::size_t(kKinds * kBins));
-  for (auto& counts : counts_) {
-    all.insert(all.end(), counts.begin(), counts.end());
-    std::fill(counts.begin(), counts.end(), 0.0);
-  }
+  for (const auto& counts : counts_) all.insert(all.end(), counts.begin(), counts.end());
+  clear();
   comm.sum(all.data(), int(all.size()));
   return all;
 }
 
 DepositSpeedFileWriter::DepositSpeedFileWriter(const std::string& path, double cells_per_unit_length,
-                                               bool append) {
+                                               double time_per_fluid_step, bool append) {
   file_ = std::fopen(path.c_str(), append ? "a" : "w");
   if (!file_) throw std::runtime_error("cannot open the deposit speed file " + path + " for writing");
   std::fseek(file_, 0, SEEK_END);
@@ -48,11 +55,12 @@ DepositSpeedFileWriter::DepositSpeedFileWriter(const std::string& path, double c
   using H = DepositSpeedHistogram;
   std::fprintf(file_,
                "# Speeds of the particles in the deposit region, counted once per particle and fluid step.\n"
-               "# Speed in lattice cells per fluid step; %.10g cells per length unit of the script.\n"
+               "# Speed in lattice cells per fluid step; %.10g cells per length unit and %.10g time units per "
+               "fluid step of the script.\n"
                "# Bin 0: below 1e%d; bin b in 1..%d: [10^(%d + (b-1)/%d), 10^(%d + b/%d)); bin %d: 1e%d and above.\n"
                "# kind 0: bonded, touching the wall; 1: bonded to other particles only; 2: not bonded.\n"
                "# first_fluid_step last_fluid_step kind n_0 ... n_%d\n",
-               cells_per_unit_length, H::kLog10Low, H::kBins - 2, H::kLog10Low, H::kBinsPerDecade, H::kLog10Low,
+               cells_per_unit_length, time_per_fluid_step, H::kLog10Low, H::kBins - 2, H::kLog10Low, H::kBinsPerDecade, H::kLog10Low,
                H::kBinsPerDecade, H::kBins - 1, H::kLog10High, H::kBins - 1);
   std::fflush(file_);
 }

@@ -60,7 +60,10 @@ void PoreMonitor::record_particles(const ParticleView& view, const std::vector<c
   auto& v = values_;
   for (std::size_t i = 0; i < kDepositSpeedLadder.size(); ++i)
     v[kDepositedCountScaledSpeed + i] = double(deposit.count_at_scaled_threshold[i]);
-  if (speed_every_ > 0) speeds_.add(view, bonded, on_wall, setup_.pore);
+  if (speed_every_ > 0) {
+    step_speeds_.clear();
+    step_speeds_.add(view, bonded, on_wall, setup_.pore);
+  }
   v[kDepositedVolume] = deposit.volume * volume_unit;
   v[kDepositedCount] = double(deposit.count);
   // L_dep = V_dep / (pi D^2 / 4) with the pore's diameter (the equivalent one for a voxel file);
@@ -165,18 +168,23 @@ std::optional<BurstRecord> PoreMonitor::record_fluid_step(const lbm::FluidSolver
   return burst;
 }
 
-void PoreMonitor::write_deposit_speeds_to(const std::string& path, long long every, double cells_per_unit_length,
-                                          bool append) {
+void PoreMonitor::write_deposit_speeds_to(const std::string& path, long long every, bool append) {
   speed_every_ = every;
   speed_first_step_ = -1;
-  if (!path.empty()) speed_file_ = std::make_unique<DepositSpeedFileWriter>(path, cells_per_unit_length, append);
+  if (!path.empty())
+    speed_file_ = std::make_unique<DepositSpeedFileWriter>(path, 1.0 / units_.inputs().dx, units_.dt_lbm(), append);
 }
 
-// At the end of each interval of speed_every_ fluid steps (counted from fluid step 0, so a
-// resumed run keeps the intervals of an uninterrupted one; its first may be shorter).
+// The step's speeds join the interval (a fluid step already recorded, the setup of a later
+// run, adds none); at the end of each interval of speed_every_ fluid steps (counted from
+// fluid step 0, so a resumed run keeps the intervals of an uninterrupted one; its first may be
+// shorter, and the counts of an interval cut short by the run's end are not written) they go
+// to the file.
 void PoreMonitor::take_deposit_speeds(const lbm::FluidSolver& solver, long long fluid_step) {
+  speeds_.add(step_speeds_);
+  step_speeds_.clear();
   if (speed_first_step_ < 0) speed_first_step_ = fluid_step;
-  if (fluid_step % speed_every_ != 0) return;
+  if (fluid_step == 0 || fluid_step % speed_every_ != 0) return;
   const std::vector<double> counts = speeds_.take(solver.decomposition().comm);
   if (speed_file_) speed_file_->write(speed_first_step_, fluid_step, counts);
   speed_first_step_ = -1;

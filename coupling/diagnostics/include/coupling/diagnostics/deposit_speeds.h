@@ -36,6 +36,9 @@ class DepositSpeedHistogram {
   // than the view, missing entries read as not on the wall).
   void add(const ParticleView& view, const std::vector<char>& bonded, const std::vector<char>& on_wall,
            const PoreRegion& region);
+  // Another histogram's counts added to these; clear() starts from zero.
+  void add(const DepositSpeedHistogram& other);
+  void clear();
   // The counts since the last take() summed over the ranks (every rank gets them), kind by
   // kind, kBins each; this rank's counts start again from zero. Collective.
   std::vector<double> take(const lbm::Communicator& comm);
@@ -46,12 +49,14 @@ class DepositSpeedHistogram {
 };
 
 // One row per interval and kind: "first_fluid_step last_fluid_step kind n_0 ... n_{kBins-1}",
-// under a header that gives the bins' edges and the cells per d to convert them. A fresh
+// under a header that gives the bins' edges, and the lattice cells per length unit and the
+// time units per fluid step of the script to convert them to its units. A fresh
 // run starts the file anew, a resumed run appends. Rank 0 only; throws std::runtime_error
 // naming the file when it cannot be opened.
 class DepositSpeedFileWriter {
  public:
-  DepositSpeedFileWriter(const std::string& path, double cells_per_unit_length, bool append);
+  DepositSpeedFileWriter(const std::string& path, double cells_per_unit_length, double time_per_fluid_step,
+                         bool append);
   ~DepositSpeedFileWriter();
   DepositSpeedFileWriter(const DepositSpeedFileWriter&) = delete;
   DepositSpeedFileWriter& operator=(const DepositSpeedFileWriter&) = delete;

@@ -145,7 +145,7 @@ class PoreMonitor {
   // and sum them over the ranks every `every` fluid steps. Rank 0 may then write each
   // interval's counts to `path` ("" on the others: counted, not written), appending when the
   // run was resumed. Throws std::runtime_error naming the file when it cannot be opened.
-  void write_deposit_speeds_to(const std::string& path, long long every, double cells_per_unit_length, bool append);
+  void write_deposit_speeds_to(const std::string& path, long long every, bool append);
 
   const std::vector<double>& values() const { return values_; }
   // Everything a restart needs (the number of values, the values, with the cumulative
@@ -171,7 +171,8 @@ class PoreMonitor {
   double coupling_mass_[2] = {0.0, 0.0};  // this rank's, since the last fluid step recorded
   long long last_burst_sample_ = -1;  // the fluid step last fed to the detector
   std::unique_ptr<BurstFileWriter> burst_file_;
-  DepositSpeedHistogram speeds_;
+  DepositSpeedHistogram speeds_;       // the interval's counts
+  DepositSpeedHistogram step_speeds_;  // the last record_particles', added at a new fluid step
   std::unique_ptr<DepositSpeedFileWriter> speed_file_;
   long long speed_every_ = 0;         // fluid steps per interval; 0: not counted
   long long speed_first_step_ = -1;   // the interval's first fluid step (-1: none yet)
