@@ -1,6 +1,7 @@
 #include "lbm/checkpoint.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
@@ -95,10 +96,11 @@ void write_checkpoint(const FluidSolver& solver, const std::string& path) {
     throw InputError("fluid checkpoint '" + file + "': cannot replace it with the new one (" + partial + ")");
 }
 
-void read_checkpoint(FluidSolver& solver, const std::string& path) {
-  const std::string file = rank_path(solver, path);
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError("fluid checkpoint '" + file + "': cannot be opened");
+namespace {
+
+// A checkpoint file's header, checked against this run's lattice and precision; the file
+// left positioned at its first cell.
+Header read_header(std::ifstream& in, const std::string& file, const FluidSolver& solver) {
   Header h{};
   in.read(reinterpret_cast<char*>(&h), sizeof h);
   if (!in || std::memcmp(h.magic, kMagic, sizeof kMagic) != 0)
@@ -109,24 +111,107 @@ void read_checkpoint(FluidSolver& solver, const std::string& path) {
                      std::to_string(h.real_bytes * 8) + "-bit populations, this build uses " +
                      std::to_string(expected.real_bytes * 8));
   for (int a = 0; a < 3; ++a)
-    if (h.global_lo[a] != expected.global_lo[a] || h.global_hi[a] != expected.global_hi[a] ||
-        h.owned_lo[a] != expected.owned_lo[a] || h.owned_hi[a] != expected.owned_hi[a])
-      throw InputError("fluid checkpoint '" + file +
-                       "': lattice or decomposition differs from this run (same lattice and "
-                       "the same processor grid are required)");
+    if (h.global_lo[a] != expected.global_lo[a] || h.global_hi[a] != expected.global_hi[a])
+      throw InputError("fluid checkpoint '" + file + "': written for another lattice (" +
+                       std::to_string(h.global_hi[0] - h.global_lo[0]) + " x " +
+                       std::to_string(h.global_hi[1] - h.global_lo[1]) + " x " +
+                       std::to_string(h.global_hi[2] - h.global_lo[2]) + " nodes)");
+  return h;
+}
+
+bool same_owned_box(const Header& h, const FluidSolver& solver) {
+  const Header mine = header_of(solver);
+  for (int a = 0; a < 3; ++a)
+    if (h.owned_lo[a] != mine.owned_lo[a] || h.owned_hi[a] != mine.owned_hi[a]) return false;
+  return true;
+}
+
+// The owned cells of `solver` inside the box the file `in` (its header `h` read) holds.
+// Returns how many it read.
+long long read_overlap(std::ifstream& in, const std::string& file, const Header& h, FluidSolver& solver) {
   const auto& g = solver.layout();
-  for_owned(g, [&](std::size_t cell) {
-    char type = 0;
-    in.get(type);
-    solver.node_types()[cell] = static_cast<std::uint8_t>(type);
-    for (int q = 0; q < D3Q19::Q; ++q) {
-      Real v;
-      in.read(reinterpret_cast<char*>(&v), sizeof v);
-      solver.populations().at(q, cell) = v;
+  const Box& mine = solver.decomposition().owned;
+  const std::array<int, 3> size{h.owned_hi[0] - h.owned_lo[0], h.owned_hi[1] - h.owned_lo[1],
+                                h.owned_hi[2] - h.owned_lo[2]};
+  const std::size_t record = 1 + D3Q19::Q * sizeof(Real);
+  std::vector<char> row(std::size_t(std::max(size[0], 0)) * record);
+  const std::streamoff first = std::streamoff(sizeof(Header));
+  long long read = 0;
+  for (int z = std::max(h.owned_lo[2], mine.lo[2]); z < std::min(h.owned_hi[2], mine.hi[2]); ++z)
+    for (int y = std::max(h.owned_lo[1], mine.lo[1]); y < std::min(h.owned_hi[1], mine.hi[1]); ++y) {
+      const int x0 = std::max(h.owned_lo[0], mine.lo[0]), x1 = std::min(h.owned_hi[0], mine.hi[0]);
+      if (x0 >= x1) continue;
+      const std::streamoff at =
+          first + std::streamoff((std::size_t(z - h.owned_lo[2]) * std::size_t(size[1]) +
+                                  std::size_t(y - h.owned_lo[1])) * std::size_t(size[0]) +
+                                 std::size_t(x0 - h.owned_lo[0])) * std::streamoff(record);
+      in.seekg(at);
+      in.read(row.data(), std::streamsize(std::size_t(x1 - x0) * record));
+      if (!in) throw InputError("fluid checkpoint '" + file + "': truncated");
+      for (int x = x0; x < x1; ++x) {
+        const char* r = row.data() + std::size_t(x - x0) * record;
+        const std::size_t cell = g.cell(x - mine.lo[0], y - mine.lo[1], z - mine.lo[2]);
+        solver.node_types()[cell] = static_cast<std::uint8_t>(r[0]);
+        for (int q = 0; q < D3Q19::Q; ++q) {
+          Real v;
+          std::memcpy(&v, r + 1 + std::size_t(q) * sizeof(Real), sizeof v);
+          solver.populations().at(q, cell) = v;
+        }
+        ++read;
+      }
     }
-  });
-  if (!in) throw InputError("fluid checkpoint '" + file + "': truncated");
-  solver.set_time_step(h.time_step);
+  return read;
+}
+
+}  // namespace
+
+void read_checkpoint(FluidSolver& solver, const std::string& path) {
+  const std::string file = rank_path(solver, path);
+  {
+    std::ifstream in(file, std::ios::binary);
+    if (in) {
+      const Header h = read_header(in, file, solver);
+      if (same_owned_box(h, solver)) {
+        const auto& g = solver.layout();
+        for_owned(g, [&](std::size_t cell) {
+          char type = 0;
+          in.get(type);
+          solver.node_types()[cell] = static_cast<std::uint8_t>(type);
+          for (int q = 0; q < D3Q19::Q; ++q) {
+            Real v;
+            in.read(reinterpret_cast<char*>(&v), sizeof v);
+            solver.populations().at(q, cell) = v;
+          }
+        });
+        if (!in) throw InputError("fluid checkpoint '" + file + "': truncated");
+        solver.set_time_step(h.time_step);
+        return;
+      }
+    }
+  }
+  // Written by another decomposition (another number of ranks or processor grid): every
+  // rank's file `<path>.0`, `<path>.1`, ... until one is missing, each giving the part of
+  // its box this rank owns.
+  const long long wanted = solver.decomposition().owned.volume();
+  long long found = 0;
+  long long time_step = -1;
+  for (int r = 0;; ++r) {
+    const std::string other = path + "." + std::to_string(r);
+    std::ifstream in(other, std::ios::binary);
+    if (!in) break;
+    const Header h = read_header(in, other, solver);
+    if (time_step >= 0 && h.time_step != time_step)
+      throw InputError("fluid checkpoint '" + other + "': from another step than '" + path +
+                       ".0' (" + std::to_string(h.time_step) + " against " + std::to_string(time_step) + ")");
+    time_step = h.time_step;
+    found += read_overlap(in, other, h, solver);
+  }
+  if (time_step < 0) throw InputError("fluid checkpoint '" + file + "': cannot be opened");
+  if (found != wanted)
+    throw InputError("fluid checkpoint '" + path + ".<rank>': the files found cover " +
+                     std::to_string(found) + " of this rank's " + std::to_string(wanted) +
+                     " nodes (a rank's file missing?)");
+  solver.set_time_step(time_step);
 }
 
 void release_moving_nodes(FluidSolver& solver) {

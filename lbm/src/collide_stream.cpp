@@ -117,11 +117,13 @@ void fill_fluid_mask(const std::uint8_t* __restrict type, const Run& run, int st
 
 // kIncompressible: He & Luo's equilibrium, the momentum rho0 u and rho only in the zeroth
 // order (a compile-time choice, so the standard kernel's arithmetic is untouched).
-template <int kChunk, bool kForce, bool kIncompressible>
+// kMoments: the outputs' moments into moments[0..3] (CollideStreamArgs::moments).
+template <int kChunk, bool kForce, bool kIncompressible, bool kMoments>
 void collide_stream_run(const Real* const* src, Real* const* dst,
                         const std::uint8_t* __restrict type, const Run& run,
                         const std::ptrdiff_t* off, double omega_plus,
-                        double omega_minus, double fx, double fy, double fz, double rho0) {
+                        double omega_minus, double fx, double fy, double fz, double rho0,
+                        double* const* moments) {
   constexpr bool streaming = kChunk == kChunkStreaming;
   using Out = std::conditional_t<streaming, double, Real>;
   const double source_even = 1.0 - 0.5 * omega_plus;
@@ -150,6 +152,7 @@ void collide_stream_run(const Real* const* src, Real* const* dst,
     for (int i = 0; i < m; ++i) {
       const double fluid = fluid_mask[i];
       double fin[L::Q];
+      [[maybe_unused]] double post[L::Q];
       #pragma GCC unroll 19
       for (int q = 0; q < L::Q; ++q) fin[q] = pull[q][i];
       double rho = 0.0, jx = 0.0, jy = 0.0, jz = 0.0;
@@ -178,6 +181,7 @@ void collide_stream_run(const Real* const* src, Real* const* dst,
         double result = fin[0] - omega_plus * (fin[0] - feq);
         if (kForce) result += source_even * L::w[0] * (-3.0 * uf);
         out[0][i] = static_cast<Out>(fluid * result);
+        if (kMoments) post[0] = static_cast<Real>(fluid * result);
       }
       // Pairs (q, q+1) are opposite: split into symmetric and antisymmetric parts.
       #pragma GCC unroll 19
@@ -198,6 +202,29 @@ void collide_stream_run(const Real* const* src, Real* const* dst,
         }
         out[q][i] = static_cast<Out>(fluid * (a - relax_plus - relax_minus + source_plus + source_minus));
         out[q + 1][i] = static_cast<Out>(fluid * (b - relax_plus + relax_minus + source_plus - source_minus));
+        if (kMoments) {
+          post[q] = static_cast<Real>(fluid * (a - relax_plus - relax_minus + source_plus + source_minus));
+          post[q + 1] = static_cast<Real>(fluid * (b - relax_plus + relax_minus + source_plus - source_minus));
+        }
+      }
+      if (kMoments) {
+        // node_moments (macroscopic.cpp) of the stored values, in its order: rho and j
+        // summed over q = 0..18, the terms with c = 0 left out, c = -1 subtracted.
+        double m_rho = 0.0, m_j[3] = {0.0, 0.0, 0.0};
+        #pragma GCC unroll 19
+        for (int q = 0; q < L::Q; ++q) {
+          m_rho += post[q];
+          #pragma GCC unroll 3
+          for (int a = 0; a < 3; ++a) {
+            if (L::c[q][a] == 1) m_j[a] += post[q];
+            if (L::c[q][a] == -1) m_j[a] -= post[q];
+          }
+        }
+        m_rho += 1.0 - fluid;  // exact for fluid nodes (+0), 1 elsewhere
+        moments[0][first + std::size_t(i)] = m_rho;
+        moments[1][first + std::size_t(i)] = (m_j[0] - 0.5 * fx) / m_rho;
+        moments[2][first + std::size_t(i)] = (m_j[1] - 0.5 * fy) / m_rho;
+        moments[3][first + std::size_t(i)] = (m_j[2] - 0.5 * fz) / m_rho;
       }
     }
     if constexpr (!streaming) continue;
@@ -246,14 +273,21 @@ bool output_exceeds_cache(std::size_t cells) {
 }
 
 using RunKernel = void (*)(const Real* const*, Real* const*, const std::uint8_t*, const Run&,
-                          const std::ptrdiff_t*, double, double, double, double, double, double);
+                          const std::ptrdiff_t*, double, double, double, double, double, double,
+                          double* const*);
+
+template <int kChunk, bool kMoments>
+RunKernel run_kernel(bool incompressible, bool forced) {
+  return incompressible ? (forced ? collide_stream_run<kChunk, true, true, kMoments>
+                                  : collide_stream_run<kChunk, false, true, kMoments>)
+                        : (forced ? collide_stream_run<kChunk, true, false, kMoments>
+                                  : collide_stream_run<kChunk, false, false, kMoments>);
+}
 
 template <int kChunk>
-RunKernel run_kernel(bool incompressible, bool forced) {
-  return incompressible ? (forced ? collide_stream_run<kChunk, true, true>
-                                  : collide_stream_run<kChunk, false, true>)
-                        : (forced ? collide_stream_run<kChunk, true, false>
-                                  : collide_stream_run<kChunk, false, false>);
+RunKernel run_kernel(bool incompressible, bool forced, bool moments) {
+  return moments ? run_kernel<kChunk, true>(incompressible, forced)
+                 : run_kernel<kChunk, false>(incompressible, forced);
 }
 
 }  // namespace
@@ -269,8 +303,9 @@ void collide_stream(const CollideStreamArgs& a) {
   const bool streaming = a.stores == Stores::kStreaming ||
                          (a.stores == Stores::kByCacheSize && !a.in_place && output_exceeds_cache(n));
   // The run kernel of the options, chosen once (no option is looked up per cell).
-  const auto run = streaming ? run_kernel<kChunkStreaming>(a.incompressible, forced)
-                             : run_kernel<kChunkPlain>(a.incompressible, forced);
+  const bool moments = a.moments[0] && a.moments[1] && a.moments[2] && a.moments[3];
+  const auto run = streaming ? run_kernel<kChunkStreaming>(a.incompressible, forced, moments)
+                             : run_kernel<kChunkPlain>(a.incompressible, forced, moments);
   const int nx = g.size(0), ny = g.size(1), nz = g.size(2);
   if (nx <= 0 || ny <= 0 || nz <= 0) return;
   if (a.spans) {
@@ -283,7 +318,7 @@ void collide_stream(const CollideStreamArgs& a) {
         const KernelSpan& span = a.spans[i];
         const Run r{span.first, span.length, g.padded(0), nx, g.coords(span.first)[0]};
         run(a.src.data(), a.dst.data(), a.node_type, r, off, a.omega_plus, a.omega_minus,
-            a.force[0], a.force[1], a.force[2], a.rho0);
+            a.force[0], a.force[1], a.force[2], a.rho0, a.moments.data());
       }
       detail::streaming_store_fence();
     }
@@ -306,7 +341,7 @@ void collide_stream(const CollideStreamArgs& a) {
         if (j0 == j1) continue;
         const Run r{g.cell(0, j0, k), (j1 - j0 - 1) * g.padded(0) + nx, g.padded(0), nx, 0};
         run(a.src.data(), a.dst.data(), a.node_type, r, off, a.omega_plus, a.omega_minus,
-            a.force[0], a.force[1], a.force[2], a.rho0);
+            a.force[0], a.force[1], a.force[2], a.rho0, a.moments.data());
       }
     // Before the region's closing barrier: every thread's runs are in memory after it.
     detail::streaming_store_fence();

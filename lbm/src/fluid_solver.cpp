@@ -124,6 +124,7 @@ double FluidSolver::equilibrium_at(int q, double rho, const std::array<double, 3
 
 void FluidSolver::initialise_equilibrium(double rho, const std::array<double, 3>& u) {
   face_density_time_[0] = face_density_time_[1] = kNever;
+  node_moments_valid_ = false;
   const std::size_t n = layout_.num_cells();
   for (std::size_t cell = 0; cell < n; ++cell) {
     const bool fluid = node_type_[cell] == kFluid;
@@ -135,6 +136,7 @@ void FluidSolver::initialise_equilibrium(double rho, const std::array<double, 3>
 void FluidSolver::initialise_equilibrium(
     const std::function<std::array<double, 4>(int, int, int)>& state) {
   face_density_time_[0] = face_density_time_[1] = kNever;
+  node_moments_valid_ = false;
   for (int k = -1; k <= layout_.size(2); ++k)
     for (int j = -1; j <= layout_.size(1); ++j)
       for (int i = -1; i <= layout_.size(0); ++i) {
@@ -305,9 +307,25 @@ void FluidSolver::collide_stream() {
   args.force = parameters_.body_force;
   args.incompressible = parameters_.incompressible;
   args.rho0 = parameters_.rho0;
+  if (keep_node_moments_)
+    for (int m = 0; m < 4; ++m) args.moments[std::size_t(m)] = node_moments_[std::size_t(m)].data();
   lbm::collide_stream(args);
   f_.set_placement(next);
   ++time_step_;
+  node_moments_valid_ = keep_node_moments_;
+}
+
+void FluidSolver::keep_node_moments() {
+  if (keep_node_moments_) return;
+  keep_node_moments_ = true;
+  for (std::vector<double>& m : node_moments_) m.assign(layout_.num_cells(), 0.0);
+}
+
+void FluidSolver::refresh_node_moments(std::size_t cell) {
+  if (!keep_node_moments_) return;
+  const NodeMoments m = node_moments(f_, cell, parameters_.body_force);
+  node_moments_[0][cell] = m.rho;
+  for (int a = 0; a < 3; ++a) node_moments_[std::size_t(1 + a)][cell] = m.u[std::size_t(a)];
 }
 
 void FluidSolver::step() {

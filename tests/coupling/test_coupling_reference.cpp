@@ -264,6 +264,37 @@ TEST(CouplingReference, LinkSweepGivesTheSeparateStagesBitForBit) {
   }
 }
 
+// The sweep's order: every link once, by fluid node in memory order, a node's links in
+// link order (so that the node is gathered and corrected once and the correction's
+// roundings are those of link order), and each link's copy the link itself.
+TEST(CouplingReference, LinkSweepOrdersTheLinksByNodeInLinkOrder) {
+  const CrowdedLinks crowded;
+  const std::vector<lbm::BoundaryLink>& links = crowded.links.links;
+  lbm::moving_wall::LinkSweep order;
+  order.sort(links, crowded.solver->layout());
+  const std::size_t n = links.size();
+  ASSERT_EQ(order.first(order.num_blocks()), n);
+  std::vector<int> seen(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint32_t id = order.id(i);
+    ASSERT_LT(id, n);
+    ++seen[id];
+    EXPECT_EQ(order.link(i).fluid_cell, links[id].fluid_cell);
+    EXPECT_EQ(order.link(i).q, links[id].q);
+    EXPECT_EQ(order.link(i).fraction, links[id].fraction);
+    if (i == 0) continue;
+    const std::size_t before = order.link(i - 1).fluid_cell, here = order.link(i).fluid_cell;
+    ASSERT_LE(before, here) << "position " << i;
+    if (before == here) {
+      EXPECT_LT(order.id(i - 1), id) << "position " << i;
+    }
+  }
+  for (std::size_t id = 0; id < n; ++id) EXPECT_EQ(seen[id], 1) << "link " << id;
+  for (std::size_t b = 0; b < order.num_blocks(); ++b)
+    for (std::size_t i = order.first(b); i < order.first(b + 1); ++i)
+      EXPECT_EQ(order.link(i).fluid_cell >> lbm::moving_wall::LinkSweep::kBlockShift, b);
+}
+
 // The sweep's ranges: whole blocks, in order, covering every block, each holding about its
 // share of the links.
 TEST(CouplingReference, LinkSweepSharesCoverEveryBlockOnce) {
@@ -277,7 +308,7 @@ TEST(CouplingReference, LinkSweepSharesCoverEveryBlockOnce) {
     for (int t = 0; t < shares; ++t) {
       const std::size_t first = order.block_of_share(t, shares), last = order.block_of_share(t + 1, shares);
       ASSERT_LE(first, last);
-      const auto held = std::size_t(order.end(last == first ? first : last - 1) - order.begin(first));
+      const std::size_t held = order.first(last) - order.first(first);
       const std::size_t linked = last == first ? 0 : held;
       // A range ends at a block boundary: at most one block's links (64 cells, at most
       // 18 links each) from its share.

@@ -17,6 +17,9 @@ SphereCoupling::SphereCoupling(lbm::FluidSolver& solver, const SphereCouplingOpt
     throw lbm::InputError("moving walls: the Mei-Luo-Shyy scheme needs tau away from 2 "
                           "(|tau - 2| >= 0.2), got tau = " + std::to_string(tau) +
                           "; choose another tau or the Bouzidi scheme");
+  // Mei-Luo-Shyy reads the moments of every fluid node next to a sphere (and of the node
+  // behind it): the kernel keeps them as it collides (FluidSolver::keep_node_moments).
+  if (options.wall_scheme == lbm::MovingWallScheme::kMeiLuoShyy) solver_.keep_node_moments();
 }
 
 void SphereCoupling::map_and_refill(const ParticleView& view) {
@@ -51,20 +54,30 @@ void SphereCoupling::map_and_refill(const ParticleView& view) {
       ghost_moment_axes_[a] = counts[1 + a] > 0;
       halo_counts_.moments[a] += ghost_moment_axes_[a];
     }
-    if (ghost_moments_near_spheres_ && (ghost_moment_axes_[0] || ghost_moment_axes_[1] || ghost_moment_axes_[2]))
+    if (ghost_moments_near_spheres_ && !solver_.node_moment_field() &&
+        (ghost_moment_axes_[0] || ghost_moment_axes_[1] || ghost_moment_axes_[2]))
       ghost_moment_cells(mapping_, view, solver_, ghost_moment_axes_, ghost_moment_cells_);
     ++halo_counts_.steps;
     if (uncovered > 0) solver_.exchange_ghost_densities(ghost_density_);
     mass_ = refill_uncovered(change, mapping_, view, options_.refill, solver_,
                              uncovered > 0 ? &ghost_density_ : nullptr);
+    for (const std::size_t cell : change.uncovered) solver_.refresh_node_moments(cell);
   }
   mapping_.commit(change, solver_.node_types());
 }
 
 void SphereCoupling::exchange_halo() {
   solver_.exchange_halo(lbm::HaloPopulations::crossing());
+  own_exchange_ = true;
   ghost_moments_fresh_ = ghost_moment_axes_[0] || ghost_moment_axes_[1] || ghost_moment_axes_[2];
   if (!ghost_moments_fresh_) return;
+  if (solver_.node_moment_field()) {
+    // The sent planes hold the moments the kernel kept: carried as they are, no gather.
+    auto& field = solver_.node_moment_storage();
+    double* fields[4] = {field[0].data(), field[1].data(), field[2].data(), field[3].data()};
+    solver_.exchange_ghost_fields(fields, 4, ghost_moment_axes_);
+    return;
+  }
   if (ghost_moments_near_spheres_)
     lbm::moving_wall::exchange_ghost_moments(solver_, ghost_moment_axes_, ghost_moments_,
                                              &ghost_moment_cells_.sent, &ghost_moment_cells_.received);
@@ -81,7 +94,13 @@ void SphereCoupling::apply_moving_walls_and_force(const ParticleView& view) {
   const bool conserve = options_.conserve_link_mass;
   // Received by this step's exchange_halo, or none (a host that exchanged by itself).
   const lbm::moving_wall::GhostMoments* ghosts = ghost_moments_fresh_ ? &ghost_moments_ : nullptr;
+  // The kernel's moments, where its ghosts hold what links read: this step's own exchange
+  // carried them there, or no link reads a ghost's moments (whole_ghost_axes).
+  const bool any_axis = ghost_moment_axes_[0] || ghost_moment_axes_[1] || ghost_moment_axes_[2];
+  const std::array<std::vector<double>, 4>* field =
+      (own_exchange_ || !any_axis) ? solver_.node_moment_field() : nullptr;
   ghost_moments_fresh_ = false;
+  own_exchange_ = false;
   {
     StageTimer t(times_.moving_walls);
     build_sphere_links(mapping_, view, solver_.node_types(), links_, &link_scratch_);
@@ -92,7 +111,7 @@ void SphereCoupling::apply_moving_walls_and_force(const ParticleView& view) {
       // the force is the scheme's own.
       link_defect_ = lbm::moving_wall::apply_links_and_restore_mass(
           links_.links, options_.wall_scheme, solver_, moment_cache_, link_sweep_,
-          link_populations_, defect_per_link_, ghosts);
+          link_populations_, defect_per_link_, ghosts, field);
     } else {
       lbm::apply_links(links_.links, options_.wall_scheme, solver_, &moment_cache_, nullptr,
                        &link_populations_, ghosts);

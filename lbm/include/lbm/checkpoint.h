@@ -8,8 +8,9 @@ namespace lbm {
 // The fluid state a resumed run needs: this rank's populations (owned nodes), node types
 // and the time step, in a binary file per rank (`<path>.<rank>`). The header records the
 // global and owned boxes and the storage precision, so a file is only read back into the
-// same lattice and the same decomposition; anything else is an InputError naming the file
-// and the mismatch. Moving-particle nodes are stored as they are; the coupling rebuilds its
+// same lattice and precision; anything else is an InputError naming the file and the
+// mismatch. A run on another decomposition (another number of ranks, another processor
+// grid) reads the part of every rank's file that it owns. Moving-particle nodes are stored as they are; the coupling rebuilds its
 // own state from the particles.
 void write_checkpoint(const FluidSolver& solver, const std::string& path);
 void read_checkpoint(FluidSolver& solver, const std::string& path);

@@ -123,6 +123,7 @@ class FluidSolver {
   long long time_step() const { return time_step_; }
   void set_time_step(long long t) {
     time_step_ = t;
+    node_moments_valid_ = false;
     face_density_time_[0] = face_density_time_[1] = kNever;
   }
   // Changes the drive between steps (e.g. a pressure ramp).
@@ -137,6 +138,24 @@ class FluidSolver {
   // this rank (as MLUPS count them; the kernel also sweeps row padding), the unit of the
   // "fluid-cell updates" in which the coupling's cost is counted.
   std::size_t updated_cells() const { return updated_cells_; }
+
+  // The moments of every node (rho and u, as node_moments gives them from the stored
+  // populations), kept by collide_stream while it holds each node's values, for a host whose
+  // boundary stages read the moments of many nodes (Mei-Luo-Shyy moving walls): four values
+  // per node (32 bytes) instead of 19 populations gathered from 19 arrays. Off until asked
+  // for. node_moment_field() is null until the first collide_stream after it was asked for,
+  // and again after anything else rewrote the populations wholesale (initialise_equilibrium,
+  // a checkpoint's set_time_step); a host that rewrites a node's populations between steps
+  // calls refresh_node_moments(cell) (the refill of uncovered nodes) or
+  // invalidate_node_moments(). The field's ghost cells hold whatever the kernel or a host's
+  // exchange left there (FluidSolver::exchange_ghost_fields carries it).
+  void keep_node_moments();
+  const std::array<std::vector<double>, 4>* node_moment_field() const {
+    return node_moments_valid_ ? &node_moments_ : nullptr;
+  }
+  std::array<std::vector<double>, 4>& node_moment_storage() { return node_moments_; }
+  void refresh_node_moments(std::size_t cell);
+  void invalidate_node_moments() { node_moments_valid_ = false; }
 
   // Macroscopic values at a local cell, from the stored post-collision populations:
   // rho = sum f, rho u = sum c f - F/2 (the Guo forcing shift undone).
@@ -188,6 +207,8 @@ class FluidSolver {
   std::size_t updated_cells_ = 0;
   std::unique_ptr<HaloExchange> halo_;
   long long time_step_ = 0;
+  std::array<std::vector<double>, 4> node_moments_;  // keep_node_moments()
+  bool keep_node_moments_ = false, node_moments_valid_ = false;
 };
 
 }  // namespace lbm

@@ -4,6 +4,8 @@
 // file instantiates them, so the per-link formula is inlined and no link branches on the
 // scheme.
 
+#include <type_traits>
+
 #include "lbm/moving_wall/link_boundary.h"
 #include "lbm/moving_wall/link_mass.h"
 #include "lbm/moving_wall/link_sweep.h"
@@ -72,28 +74,83 @@ void apply_range(const std::vector<BoundaryLink>& links, std::size_t first, std:
                populations ? &(*populations)[l] : nullptr);
 }
 
-// Blocks [first, last) of moving_wall::sweep (link_sweep.h) on one thread: block b's links
-// through the scheme, their defects measured, then the correction of block b - lag, whose
-// cells no link still to come reads; only blocks in [safe_first, safe_last) are corrected
-// here, the others by sweep's second phase.
+// What the node-major sweep reads once per fluid node for all its links: the scheme's
+// node_state where it has one (Mei-Luo-Shyy: the node's moments), else nothing.
+struct NoNodeState {};
 template <class Scheme>
-void sweep_blocks(const BoundaryLink* link, const LinkSweep& order, const Scheme& scheme,
-                  const DirectionOffsets& offsets, const LinkSlots& slots, double rho0,
-                  const LinkMassRestorer& restorer, PopulationField& f, LinkPopulations* pops,
-                  double* defect, std::size_t first, std::size_t last, std::size_t safe_first,
-                  std::size_t safe_last) {
+auto node_state(const Scheme& scheme, const PopulationField& f, std::size_t x, int)
+    -> decltype(scheme.node_state(f, x)) {
+  return scheme.node_state(f, x);
+}
+template <class Scheme>
+NoNodeState node_state(const Scheme&, const PopulationField&, std::size_t, long) {
+  return {};
+}
+template <class Scheme, class State>
+double returning_population(const Scheme& scheme, const BoundaryLink& link, std::ptrdiff_t offset,
+                            const PopulationField& f, const State& state) {
+  if constexpr (std::is_same_v<State, NoNodeState>)
+    return scheme.returning_population(link, offset, f);
+  else
+    return scheme.returning_population(link, offset, f, state);
+}
+
+// The links at sorted positions [i, end) of one fluid node x (consecutive, in link order)
+// through the scheme, with x's state read once; their populations and defects recorded
+// under their link ids. Returns the position after the node's last link.
+template <class Scheme>
+std::size_t apply_node(const LinkSweep& order, std::size_t i, std::size_t end,
+                       const Scheme& scheme, const DirectionOffsets& offsets,
+                       const LinkSlots& slots, double rho0, PopulationField& f,
+                       LinkPopulations* pops, double* defect) {
+  const BoundaryLink* const link = order.sorted_links();
+  const std::uint32_t* const id = order.ids();
+  const std::size_t x = link[i].fluid_cell;
+  const auto state = node_state(scheme, f, x, 0);
+  do {
+    const BoundaryLink& k = link[i];
+    const int q = k.q;
+    const double back = returning_population(scheme, k, offsets.of[q], f, state);
+    Real& slot = slots.back[q][x];
+    slot = static_cast<Real>(back);
+    const LinkPopulations populations{slots.out[q][x], slot};
+    pops[id[i]] = populations;
+    defect[id[i]] = link_defect(k, rho0, populations);
+  } while (++i != end && link[i].fluid_cell == x);
+  return i;
+}
+
+// The correction of block c's nodes, node by node: each node's 19 slots written once, with
+// the defects of its links taken off in link order (LinkMassRestorer::remove_node).
+inline void correct_block(const LinkSweep& order, std::size_t c, const LinkMassRestorer& restorer,
+                          const double* defect) {
+  const BoundaryLink* const link = order.sorted_links();
+  for (std::size_t i = order.first(c), end = order.first(c + 1); i != end;) {
+    const std::size_t x = link[i].fluid_cell;
+    std::size_t node_end = i + 1;
+    while (node_end != end && link[node_end].fluid_cell == x) ++node_end;
+    restorer.remove_node(x, defect, order.ids() + i, order.ids() + node_end);
+    i = node_end;
+  }
+}
+
+// Blocks [first, last) of moving_wall::sweep (link_sweep.h) on one thread: block b's nodes
+// through the scheme, their links' defects measured, then the correction of block b - lag,
+// whose cells no link still to come reads; only blocks in [safe_first, safe_last) are
+// corrected here, the others by sweep's second phase.
+template <class Scheme>
+void sweep_blocks(const LinkSweep& order, const Scheme& scheme, const DirectionOffsets& offsets,
+                  const LinkSlots& slots, double rho0, const LinkMassRestorer& restorer,
+                  PopulationField& f, LinkPopulations* pops, double* defect, std::size_t first,
+                  std::size_t last, std::size_t safe_first, std::size_t safe_last) {
   const std::size_t lag = order.lag();
   for (std::size_t b = first; b < last + lag; ++b) {
     if (b < last)
-      for (const std::uint32_t *l = order.begin(b), *end = order.end(b); l != end; ++l) {
-        apply_link(link[*l], scheme, offsets, slots, f, nullptr, &pops[*l]);
-        defect[*l] = link_defect(link[*l], rho0, pops[*l]);
-      }
+      for (std::size_t i = order.first(b), end = order.first(b + 1); i != end;)
+        i = apply_node(order, i, end, scheme, offsets, slots, rho0, f, pops, defect);
     if (b < first + lag) continue;
     const std::size_t c = b - lag;
-    if (c >= safe_first && c < safe_last)
-      for (const std::uint32_t *l = order.begin(c), *end = order.end(c); l != end; ++l)
-        restorer.remove(link[*l].fluid_cell, defect[*l]);
+    if (c >= safe_first && c < safe_last) correct_block(order, c, restorer, defect);
   }
 }
 
@@ -115,13 +172,11 @@ void sweep(const std::vector<BoundaryLink>& links, const LinkSweep& order, const
   const LinkSlots slots(offsets, f);
   // The arrays' addresses in locals: through the vectors they would be reloaded after every
   // call into the scheme.
-  const BoundaryLink* const link = links.data();
   LinkPopulations* const pops = populations.data();
   double* const defect = per_link.data();
   const std::size_t blocks = order.num_blocks(), lag = order.lag();
   if (threads <= 1) {
-    sweep_blocks(link, order, scheme, offsets, slots, rho0, restorer, f, pops, defect, 0, blocks,
-                 0, blocks);
+    sweep_blocks(order, scheme, offsets, slots, rho0, restorer, f, pops, defect, 0, blocks, 0, blocks);
     return;
   }
 #pragma omp parallel num_threads(threads)
@@ -131,14 +186,11 @@ void sweep(const std::vector<BoundaryLink>& links, const LinkSweep& order, const
     // The outer ends of the first and last ranges border no other thread.
     const std::size_t safe_first = t == 0 ? first : first + lag;
     const std::size_t safe_last = t + 1 == nt ? last : (last > lag ? last - lag : 0);
-    sweep_blocks(link, order, for_thread(scheme, t), offsets, slots, rho0, restorer, f, pops,
-                 defect, first, last, safe_first, safe_last);
+    sweep_blocks(order, for_thread(scheme, t), offsets, slots, rho0, restorer, f, pops, defect,
+                 first, last, safe_first, safe_last);
 #pragma omp barrier
-    for (std::size_t c = first; c < last; ++c) {
-      if (c >= safe_first && c < safe_last) continue;
-      for (const std::uint32_t *l = order.begin(c), *end = order.end(c); l != end; ++l)
-        restorer.remove(link[*l].fluid_cell, defect[*l]);
-    }
+    for (std::size_t c = first; c < last; ++c)
+      if (c < safe_first || c >= safe_last) correct_block(order, c, restorer, defect);
   }
 }
 

@@ -44,7 +44,7 @@ LinkMassRestorer::LinkMassRestorer(const BlockLayout& layout,
   for (int e = 0; e < 4; ++e) edge_[e] = layout.offset(0, e & 1 ? 1 : -1, e & 2 ? 1 : -1);
 }
 
-void LinkMassRestorer::remove(std::size_t x, double d) const {
+bool LinkMassRestorer::next_to_open(std::size_t x) const {
   // Population p reaches x from x - c_p in the next (pull) streaming. Nodes next to an open
   // face are few: their sources' types are tested first, and the others' 19 slots written
   // without a test in between (the same writes, each slot once).
@@ -61,7 +61,11 @@ void LinkMassRestorer::remove(std::size_t x, double d) const {
       maybe_open(four_types(t - 1)) | maybe_open(four_types(t + row_[0] - 1)) |
       maybe_open(four_types(t + row_[1] - 1)) | maybe_open(four_types(t + row_[2] - 1)) |
       maybe_open(four_types(t + row_[3] - 1)) | maybe_open(edges);
-  if (open != 0) {
+  return open != 0;
+}
+
+void LinkMassRestorer::remove(std::size_t x, double d) const {
+  if (next_to_open(x)) {
     remove_next_to_open(x, d);
     return;
   }
@@ -69,6 +73,22 @@ void LinkMassRestorer::remove(std::size_t x, double d) const {
   for (int p = 0; p < L::Q; ++p) {
     Real& slot = slot_[p][x];
     slot = static_cast<Real>(slot - L::w[p] * d);
+  }
+}
+
+void LinkMassRestorer::remove_node(std::size_t x, const double* defect, const std::uint32_t* first,
+                                   const std::uint32_t* last) const {
+  if (next_to_open(x)) {
+    for (const std::uint32_t* l = first; l != last; ++l) remove_next_to_open(x, defect[*l]);
+    return;
+  }
+  // Each slot takes the links' shares one after the other, as remove() per link would.
+#pragma GCC unroll 19
+  for (int p = 0; p < L::Q; ++p) {
+    Real value = slot_[p][x];
+    for (const std::uint32_t* l = first; l != last; ++l)
+      value = static_cast<Real>(value - L::w[p] * defect[*l]);
+    slot_[p][x] = value;
   }
 }
 

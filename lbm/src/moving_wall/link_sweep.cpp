@@ -12,14 +12,27 @@
 namespace lbm::moving_wall {
 
 void LinkSweep::sort(const std::vector<BoundaryLink>& links, const BlockLayout& layout) {
+  constexpr std::uint32_t kInBlock = (1u << kBlockShift) - 1;
+  const std::size_t n = links.size();
+  cell_.resize(n);
+  for (std::size_t l = 0; l < n; ++l) cell_[l] = std::uint32_t(links[l].fluid_cell);
+  // First pass: by the cell within its block (stable).
+  std::uint32_t count[kInBlock + 2] = {};
+  for (const std::uint32_t cell : cell_) ++count[(cell & kInBlock) + 1];
+  for (std::uint32_t i = 0; i <= kInBlock; ++i) count[i + 1] += count[i];
+  by_cell_in_block_.resize(n);
+  for (std::size_t l = 0; l < n; ++l) by_cell_in_block_[count[cell_[l] & kInBlock]++] = std::uint32_t(l);
+  // Second pass: by block, stable, so that within a block the cells ascend and a node's
+  // links keep their order.
   const std::size_t blocks = (layout.num_cells() >> kBlockShift) + 1;
   begin_.assign(blocks + 1, 0);
-  for (const BoundaryLink& link : links) ++begin_[(link.fluid_cell >> kBlockShift) + 1];
+  for (const std::uint32_t cell : cell_) ++begin_[(cell >> kBlockShift) + 1];
   for (std::size_t b = 0; b < blocks; ++b) begin_[b + 1] += begin_[b];
   next_.assign(begin_.begin(), begin_.end() - 1);
-  ids_.resize(links.size());
-  for (std::size_t l = 0; l < links.size(); ++l)
-    ids_[next_[links[l].fluid_cell >> kBlockShift]++] = std::uint32_t(l);
+  ids_.resize(n);
+  for (const std::uint32_t l : by_cell_in_block_) ids_[next_[cell_[l] >> kBlockShift]++] = l;
+  sorted_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) sorted_[i] = links[ids_[i]];
   // Cells one link apart (the scheme's reads x - c_q, the correction's writes x - c_p) are
   // at most `reach` indices apart, so at most reach / block + 1 blocks.
   std::ptrdiff_t reach = 0;
@@ -44,7 +57,8 @@ LinkMassDefect apply_links_and_restore_mass(const std::vector<BoundaryLink>& lin
                                             MomentCache& cache, LinkSweep& order,
                                             std::vector<LinkPopulations>& populations,
                                             std::vector<double>& per_link,
-                                            const GhostMoments* ghosts) {
+                                            const GhostMoments* ghosts,
+                                            const std::array<std::vector<double>, 4>* field) {
   const double rho0 = solver.parameters().rho0;
   const BlockLayout& layout = solver.layout();
   PopulationField& f = solver.populations();
@@ -60,10 +74,12 @@ LinkMassDefect apply_links_and_restore_mass(const std::vector<BoundaryLink>& lin
             populations, per_link, threads);
       break;
     case MovingWallScheme::kMeiLuoShyy: {
-      cache.begin(layout.num_cells(), threads);
-      if (ghosts) cache.preset(*ghosts);
+      if (!field) {
+        cache.begin(layout.num_cells(), threads);
+        if (ghosts) cache.preset(*ghosts);
+      }
       const MeiLuoShyy mls{rho0, 1.0 / solver.trt().omega_plus, solver.parameters().body_force,
-                           &solver.node_types(), &cache};
+                           &solver.node_types(), &cache, 0, field};
       sweep(links, order, mls, layout, rho0, restorer, f, populations, per_link, threads);
       break;
     }

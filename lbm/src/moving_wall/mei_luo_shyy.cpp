@@ -8,13 +8,25 @@ namespace lbm::moving_wall {
 
 double MeiLuoShyy::returning_population(const BoundaryLink& link, std::ptrdiff_t offset,
                                         const PopulationField& f) const {
+  return returning_population(link, offset, f, cache->moments(f, link.fluid_cell, body_force, table));
+}
+
+NodeMoments MeiLuoShyy::node_state(const PopulationField& f, std::size_t x) const {
+  if (field) {
+    const auto& m = *field;
+    return NodeMoments{m[0][x], {m[1][x], m[2][x], m[3][x]}};
+  }
+  return cache->moments(f, x, body_force, table);
+}
+
+double MeiLuoShyy::returning_population(const BoundaryLink& link, std::ptrdiff_t offset,
+                                        const PopulationField& f, const NodeMoments& m) const {
   using L = D3Q19;
   using Vec3 = std::array<double, 3>;
   const int q = link.q;
   const std::size_t x = link.fluid_cell;
   const double delta = link.fraction;
   const Vec3& uw = link.wall_velocity;
-  const NodeMoments& m = cache->moments(f, x, body_force, table);
   const double rho_f = m.rho;
   const Vec3 u_f = m.u;
   Vec3 u_bf;
@@ -25,7 +37,9 @@ double MeiLuoShyy::returning_population(const BoundaryLink& link, std::ptrdiff_t
     chi = (2.0 * delta - 1.0) / (tau + 0.5);
   } else {
     const std::size_t xff = x - offset;
-    u_bf = (*node_type)[xff] == kFluid ? cache->moments(f, xff, body_force, table).u : u_f;
+    u_bf = (*node_type)[xff] != kFluid ? u_f
+           : field ? Vec3{(*field)[1][xff], (*field)[2][xff], (*field)[3][xff]}
+                   : cache->moments(f, xff, body_force, table).u;
     chi = (2.0 * delta - 1.0) / (tau - 2.0);
   }
   const double cu_bf = L::c[q][0] * (u_bf[0] - u_f[0]) + L::c[q][1] * (u_bf[1] - u_f[1]) +

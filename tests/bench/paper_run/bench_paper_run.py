@@ -19,6 +19,9 @@ fluid checkpoints) in --states-dir, then read back for every timed run:
            deposits grow to 20-40 particles: doc/calibration.md)
            after 4 x 10^6 DEM steps, continued until at least 15 particles are deposited in
            the pore (deposits come and go in bursts: the state is the first such moment).
+  paper    in.pore's defaults (the paper's regime: u_lattice 0.0025, the reference pressure
+           kept) after 8 x 10^6 DEM steps, continued until the box holds at least 100
+           particles with at least 15 deposited: particles queue upstream of the clogged pore.
 
 A state is remade when its files are missing or the driver cannot read them (a restart
 format change); --remake-states forces it. Each timed run resumes a state for
@@ -83,6 +86,9 @@ STATES = {
                2000000, (50, 1)),
     "clogged": ({"u_lattice": 0.0025, "c_in": 0.05, "insert_period": 100, "reference_pressure": "remove"},
                 4000000, (0, 15)),
+    # in.pore's own defaults (the paper's regime: u_lattice 0.0025, the reference pressure
+    # kept), late in a run: particles queue upstream of the clogged pore.
+    "paper": ({"u_lattice": 0.0025, "reference_pressure": "keep"}, 8000000, (100, 15)),
 }
 MAX_EXTRA_STEPS = 6000000  # a state that has not reached its load by then is reported as is
 
@@ -234,7 +240,7 @@ def main():
     parser.add_argument("--script", required=True)
     parser.add_argument("--mpirun", default="mpirun")
     parser.add_argument("--states-dir", default=os.path.join(os.getcwd(), "paper_run_states"))
-    parser.add_argument("--states", default="steady,clogged")
+    parser.add_argument("--states", default="steady,clogged,paper")
     parser.add_argument("--remake-states", action="store_true")
     parser.add_argument("--fluid-steps", type=int, default=1000)
     parser.add_argument("--repeat", type=int, default=3)

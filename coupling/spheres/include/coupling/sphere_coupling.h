@@ -129,6 +129,7 @@ class SphereCoupling {
   std::array<bool, 3> ghost_moment_axes_{false, false, false};
   lbm::moving_wall::GhostMoments ghost_moments_;
   bool ghost_moments_fresh_ = false;
+  bool own_exchange_ = false;  // exchange_halo ran since the last moving walls
   bool ghost_moments_near_spheres_ = false;  // set_particle_reach
   GhostMomentCells ghost_moment_cells_;      // this step's, where near spheres; reused
   StageTimes times_;

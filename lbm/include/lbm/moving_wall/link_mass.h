@@ -70,6 +70,10 @@ class LinkMassRestorer {
   LinkMassRestorer(const BlockLayout& layout, const std::vector<std::uint8_t>& node_type,
                    PopulationField& f);
   void remove(std::size_t fluid_cell, double defect) const;
+  // remove(x, defect[*l]) for each link id l in [first, last), all of node x, in that order,
+  // with each of the 19 slots read and written once (the same roundings).
+  void remove_node(std::size_t fluid_cell, const double* defect, const std::uint32_t* first,
+                   const std::uint32_t* last) const;
 
  private:
   // Slot f_p(x - c_p) is slot_[p][x], the node it belongs to x + from_[p].
@@ -80,6 +84,7 @@ class LinkMassRestorer {
   std::ptrdiff_t edge_[4];  // +- e_2 +- e_3
   const std::uint8_t* type_;
 
+  bool next_to_open(std::size_t fluid_cell) const;
   void remove_next_to_open(std::size_t fluid_cell, double defect) const;
 };
 

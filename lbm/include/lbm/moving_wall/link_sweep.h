@@ -28,9 +28,10 @@ class FluidSolver;
 
 namespace lbm::moving_wall {
 
-// The links grouped by block of kBlockCells cells of their fluid node (a counting sort,
-// stable: link order within a block), and the lag of the sweep. Reused between calls, so
-// allocated once.
+// The links in the memory order of their fluid node, grouped by block of 64 cells (a radix
+// sort in two counting passes, by the cell within its block and then by block: stable, so a
+// node's links are consecutive and in link order), and the lag of the sweep. Reused between
+// calls, so allocated once.
 class LinkSweep {
  public:
   static constexpr int kBlockShift = 6;  // blocks of 64 cells
@@ -38,15 +39,22 @@ class LinkSweep {
   void sort(const std::vector<BoundaryLink>& links, const BlockLayout& layout);
   std::size_t num_blocks() const { return begin_.empty() ? 0 : begin_.size() - 1; }
   std::size_t lag() const { return lag_; }
-  const std::uint32_t* begin(std::size_t block) const { return ids_.data() + begin_[block]; }
-  const std::uint32_t* end(std::size_t block) const { return ids_.data() + begin_[block + 1]; }
+  // Block b's links are the sorted positions [first(b), first(b + 1)): position i holds link
+  // id(i), a copy of which is link(i) (the sweep reads the links in its own order, from
+  // memory in that order, rather than gathering them from the caller's order).
+  std::size_t first(std::size_t block) const { return begin_[block]; }
+  std::uint32_t id(std::size_t i) const { return ids_[i]; }
+  const BoundaryLink& link(std::size_t i) const { return sorted_[i]; }
+  const std::uint32_t* ids() const { return ids_.data(); }
+  const BoundaryLink* sorted_links() const { return sorted_.data(); }
   // The first block of share t of `shares` (0 <= t <= shares): the blocks [block_of_share(t),
   // block_of_share(t + 1)) hold about 1/shares of the links, whole blocks; share `shares`
   // starts at num_blocks().
   std::size_t block_of_share(int t, int shares) const;
 
  private:
-  std::vector<std::uint32_t> begin_, next_, ids_;
+  std::vector<std::uint32_t> begin_, next_, ids_, by_cell_in_block_, cell_;
+  std::vector<BoundaryLink> sorted_;
   std::size_t lag_ = 0;
 };
 
@@ -61,12 +69,15 @@ void sweep(const std::vector<BoundaryLink>& links, const LinkSweep& order, const
 // apply_links(links, scheme, solver, cache, nullptr, populations), then the link mass defect
 // (returned, and per link in `per_link`) and restore_link_mass, as one sweep, split over the
 // OpenMP threads by ranges of blocks (sweep in link_loop.h). The same result for any number
-// of threads. `ghosts` as for apply_links.
+// of threads. Mei-Luo-Shyy reads the moments of the nodes from `field` where non-null (the
+// solver's node_moment_field, whose ghosts every link may read hold their owners' moments),
+// else from `cache`, with `ghosts` (as for apply_links) preset in it.
 LinkMassDefect apply_links_and_restore_mass(const std::vector<BoundaryLink>& links,
                                             MovingWallScheme scheme, FluidSolver& solver,
                                             MomentCache& cache, LinkSweep& order,
                                             std::vector<LinkPopulations>& populations,
                                             std::vector<double>& per_link,
-                                            const GhostMoments* ghosts = nullptr);
+                                            const GhostMoments* ghosts = nullptr,
+                                            const std::array<std::vector<double>, 4>* field = nullptr);
 
 }  // namespace lbm::moving_wall

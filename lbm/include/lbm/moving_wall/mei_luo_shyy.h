@@ -28,9 +28,19 @@ struct MeiLuoShyy {
   const std::vector<std::uint8_t>* node_type = nullptr;  // to tell whether x - c_q is fluid
   MomentCache* cache = nullptr;                          // begun for the populations of this call
   int table = 0;                                         // the cache table of this thread
+  // Where non-null, the moments of every node that a link reads, read from here instead
+  // of the cache: the solver's node_moment_field (FluidSolver::keep_node_moments), with the
+  // ghosts' moments received into it.
+  const std::array<std::vector<double>, 4>* field = nullptr;
 
   double returning_population(const BoundaryLink& link, std::ptrdiff_t offset,
                               const PopulationField& f) const;
+
+  // The node-major sweep (link_sweep.h) gathers the moments of a fluid node once for all
+  // its links: node_state, then returning_population with them (the same value as above).
+  NodeMoments node_state(const PopulationField& f, std::size_t x) const;
+  double returning_population(const BoundaryLink& link, std::ptrdiff_t offset,
+                              const PopulationField& f, const NodeMoments& at_x) const;
 };
 
 // The copy of `scheme` that thread t of moving_wall::apply runs: its own cache table.
