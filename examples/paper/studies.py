@@ -272,6 +272,22 @@ def calibration(size):
     return runs
 
 
+def settings(size):
+    """The studies' settings measured in the chosen regime (in.pore's defaults: u_lattice
+    0.0025, the reference pressure kept): N_DEM = 100 DEM substeps per fluid step (the
+    paper's) against 20, on three seeds the examples do not use, 2 x 10^5 fluid steps each at
+    the paper size. If the largest deposits, the highest pressure peaks and the burst counts
+    agree within the seeds' spread, the studies may use the cheaper (figures/settings.py)."""
+    lengths = {"tiny": {}, "quick": dict(steps=2000000),
+               "paper": dict(steps=20000000 - 200000)}[size]
+    runs = []
+    for seed in _seeds(_counts(size, 1, 2, 3), first=200003):
+        knobs = _base(size, seed=seed, **lengths)
+        runs.append((f"seed_{seed}", knobs))
+        runs.append((f"seed_{seed}_n_dem_20", with_n_dem(knobs, 20)))
+    return runs
+
+
 # The model's open points (doc/calibration.md), each as the knobs that switch it from in.pore's
 # default. deposit_region and deposit_speed change what counts, not the physics: their twins
 # repeat the base run's trajectory and count the deposits inside the pore alone, or every
@@ -289,7 +305,7 @@ MODEL_TWINS = (("no_gap", {"min_gap": 0}),
 
 
 STUDIES = {f.__name__: f for f in (singlejump, collection, dropvol, porelength, porediameter,
-                                   phaseac, phasead, conc, pvpflux, calibration)}
+                                   phaseac, phasead, conc, pvpflux, calibration, settings)}
 
 
 def runs_of(study, size):
