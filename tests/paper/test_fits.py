@@ -10,6 +10,7 @@ the study runner's check of knobs against its study's copy of in.pore.
 
 Usage: test_fits.py <source root>   (or python3 -m unittest with LBM_PORE_REPO set)
 """
+import json
 import math
 import os
 import random
@@ -451,6 +452,28 @@ class StudyScene(unittest.TestCase):
             for size in ("tiny", "quick", "paper"):
                 for name, knobs in studies.runs_of(study, size):
                     self.assertEqual(ensemble.unknown_knobs(scene, knobs), [], f"{study} {size} {name}")
+
+
+class RunLength(unittest.TestCase):
+    """run_length.py: P_max within each length of a run's own, counted in fluid steps after
+    the warm-up, and the shortest length within 10 % of the full length's."""
+
+    def test_p_max_by_length(self):
+        import run_length
+        with tempfile.TemporaryDirectory() as run:
+            with open(os.path.join(run, "knobs.json"), "w") as f:
+                json.dump({"cells_per_d": 7.1, "warmup": 1000, "n_dem": 100}, f)
+            # 1000 DEM steps of warm-up (a spike there does not count), then P rising to 0.2
+            # at 2 x 10^5 fluid steps and to 0.21 at 8 x 10^5.
+            rows = [(500, 0.9), (1e7, 0.1), (2e7, 0.2), (5e7, 0.15), (8e7, 0.21), (1e8, 0.18)]
+            with open(os.path.join(run, "thermo.csv"), "w") as f:
+                f.write("Step,pore[16]\n" + "".join(f"{s:g},{p}\n" for s, p in rows))
+            full_length, full, by_length = run_length.p_max_by_length(run)
+        self.assertAlmostEqual(full_length, 1e6)
+        self.assertEqual(full, 0.21)
+        self.assertEqual(by_length[1e5], 0.1)
+        self.assertEqual(by_length[2.5e5], 0.2)
+        self.assertEqual(by_length[1e6], 0.21)
 
 
 class StudyThreads(unittest.TestCase):
