@@ -16,7 +16,6 @@
 #include "lbm/d3q19.h"
 #include "lbm/node_type.h"
 #include "lbm/streaming_store.h"
-#include "lbm/thread_team.h"
 
 namespace lbm {
 
@@ -309,35 +308,6 @@ void collide_stream(const CollideStreamArgs& a) {
                              : run_kernel<kChunkPlain>(a.incompressible, forced, moments);
   const int nx = g.size(0), ny = g.size(1), nz = g.size(2);
   if (nx <= 0 || ny <= 0 || nz <= 0) return;
-  if (a.spans && a.ahead) {
-    // Thread t takes the t-th contiguous share of the spans (as the static split below), in
-    // pieces of kAheadPiece cells, each after the host's work ahead of it.
-    constexpr int kAheadPiece = 512;
-    const std::size_t count = a.num_spans;
-#pragma omp parallel
-    {
-      const TeamMember member = team_member();
-      const std::size_t s0 = count * std::size_t(member.index) / std::size_t(member.size);
-      const std::size_t s1 = count * std::size_t(member.index + 1) / std::size_t(member.size);
-      const std::size_t first = s0 < s1 ? a.spans[s0].first : 0;
-      const std::size_t last = s0 < s1 ? a.spans[s1 - 1].first + std::size_t(a.spans[s1 - 1].length) : 0;
-      a.ahead->begin(member.index, member.size, first, last);
-#pragma omp barrier
-      for (std::size_t i = s0; i < s1; ++i) {
-        const KernelSpan& span = a.spans[i];
-        for (int offset = 0; offset < span.length; offset += kAheadPiece) {
-          const int length = std::min(kAheadPiece, span.length - offset);
-          const std::size_t piece = span.first + std::size_t(offset);
-          a.ahead->before(member.index, piece + std::size_t(length));
-          const Run r{piece, length, g.padded(0), nx, g.coords(piece)[0]};
-          run(a.src.data(), a.dst.data(), a.node_type, r, off, a.omega_plus, a.omega_minus,
-              a.force[0], a.force[1], a.force[2], a.rho0, a.moments.data());
-        }
-      }
-      detail::streaming_store_fence();
-    }
-    return;
-  }
   if (a.spans) {
     // The caller's spans, in order, split statically over the threads.
     const std::ptrdiff_t count = std::ptrdiff_t(a.num_spans);

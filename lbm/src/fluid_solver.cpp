@@ -289,9 +289,7 @@ double FluidSolver::open_face_density(std::size_t cell) const {
   return parameters_.rho0;
 }
 
-void FluidSolver::collide_stream() { collide_stream(nullptr); }
-
-void FluidSolver::collide_stream(KernelAhead* ahead) {
+void FluidSolver::collide_stream() {
   // In place (PopulationField: the AA pattern): read under the field's placement, written
   // under the other one, into the same slots.
   const PopulationField::Placement next = other(f_.placement());
@@ -311,7 +309,6 @@ void FluidSolver::collide_stream(KernelAhead* ahead) {
   args.rho0 = parameters_.rho0;
   if (keep_node_moments_)
     for (int m = 0; m < 4; ++m) args.moments[std::size_t(m)] = node_moments_[std::size_t(m)].data();
-  args.ahead = ahead;
   lbm::collide_stream(args);
   f_.set_placement(next);
   ++time_step_;

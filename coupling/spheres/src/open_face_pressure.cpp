@@ -87,25 +87,6 @@ struct FaceLinks {
 };
 }  // namespace
 
-namespace {
-// Whether sphere p's links reach a node beyond face `side` (only within R + 1 of it).
-bool near_face(const ParticleView& view, std::size_t p, const std::optional<lbm::OpenFace>* faces,
-               int side, int axis, int last) {
-  const double x = view.x(p)[std::size_t(axis)], R = view.r(p);
-  return side == 0 ? faces[0] && x - R - 1.0 < 0.0 : faces[1] && x + R + 1.0 > double(last);
-}
-}  // namespace
-
-bool any_sphere_near_open_face(const ParticleView& view, const lbm::FluidSolver& solver) {
-  const std::optional<lbm::OpenFace> faces[2] = {solver.open_face(0), solver.open_face(1)};
-  if (!faces[0] && !faces[1]) return false;
-  const int a = solver.drive().axis;
-  const int last = solver.decomposition().global.size(a) - 1;
-  for (std::size_t p = 0; p < view.num_total; ++p)
-    if (near_face(view, p, faces, 0, a, last) || near_face(view, p, faces, 1, a, last)) return true;
-  return false;
-}
-
 std::size_t add_open_face_pressure(const ParticleView& view, const lbm::FluidSolver& solver,
                                    double rho_gauge, HydrodynamicLoads& loads) {
   const std::optional<lbm::OpenFace> faces[2] = {solver.open_face(0), solver.open_face(1)};
@@ -117,7 +98,8 @@ std::size_t add_open_face_pressure(const ParticleView& view, const lbm::FluidSol
   for (std::size_t p = 0; p < view.num_total; ++p) {
     const Vec3 c = view.x(p);
     const double R = view.r(p);
-    const bool near[2] = {near_face(view, p, faces, 0, a, last), near_face(view, p, faces, 1, a, last)};
+    // Its links reach a node beyond the face only within R + 1 of it.
+    const bool near[2] = {faces[0] && c[a] - R - 1.0 < 0.0, faces[1] && c[a] + R + 1.0 > double(last)};
     if (!near[0] && !near[1]) continue;
     const int id = view.identifier(p);
     if (std::find(seen.begin(), seen.end(), id) != seen.end()) continue;

@@ -1,13 +1,10 @@
 #include "coupling/sphere_coupling.h"
 
 #include <cmath>
-#include <optional>
 
 #include "coupling/force/open_face_pressure.h"
 #include "coupling/stage_clock.h"
 #include "lbm/input_error.h"
-#include "lbm/moving_wall/links_ahead.h"
-#include "lbm/moving_wall/mei_luo_shyy.h"
 
 namespace coupling {
 
@@ -124,11 +121,6 @@ void SphereCoupling::apply_moving_walls_and_force(const ParticleView& view) {
     surface_mass_ = lbm::moving_wall::moving_surface_mass(links_.links, rho0) +
                     (conserve ? 0.0 : link_defect_.net);
   }
-  add_loads_of_links(view);
-}
-
-void SphereCoupling::add_loads_of_links(const ParticleView& view) {
-  const double rho0 = solver_.parameters().rho0;
   ++link_counts_.steps;
   link_counts_.links += static_cast<long long>(links_.links.size());
   StageTimer t(times_.force);
@@ -140,51 +132,6 @@ void SphereCoupling::add_loads_of_links(const ParticleView& view) {
                          loads_);
 }
 
-bool SphereCoupling::moving_walls_in_kernel(const ParticleView& view) const {
-  // Mei-Luo-Shyy with the correction, on the kernel's field (its ghosts as apply_moving_walls_
-  // and_force reads them), and no sphere near an open face: the open-face pressure reads the
-  // face's populations as they stand before the open faces and the kernel.
-  const bool any_axis = ghost_moment_axes_[0] || ghost_moment_axes_[1] || ghost_moment_axes_[2];
-  return options_.wall_scheme == lbm::MovingWallScheme::kMeiLuoShyy && options_.conserve_link_mass &&
-         solver_.node_moment_field() && (own_exchange_ || !any_axis) &&
-         !any_sphere_near_open_face(view, solver_);
-}
-
-void SphereCoupling::moving_walls_and_collide_stream(const ParticleView& view) {
-  const double rho0 = solver_.parameters().rho0;
-  ghost_moments_fresh_ = false;
-  own_exchange_ = false;
-  std::optional<lbm::moving_wall::LinksAhead> ahead;
-  {
-    StageTimer t(times_.moving_walls);
-    build_sphere_links(mapping_, view, solver_.node_types(), links_, &link_scratch_);
-    link_sweep_.sort(links_.links, solver_.layout());
-    const lbm::moving_wall::MeiLuoShyy mls{rho0, 1.0 / solver_.trt().omega_plus, solver_.parameters().body_force,
-                                           &solver_.node_types(), &moment_cache_, 0, solver_.node_moment_field()};
-    ahead.emplace(links_.links, link_sweep_, mls, solver_.layout(), rho0, solver_.populations(),
-                  solver_.node_types(), link_populations_, defect_per_link_);
-    // The open faces read what their nodes pull: those nodes' links go first.
-    if (solver_.drive().kind != lbm::FlowDrive::kNone) ahead->nodes_in_end_planes(solver_.drive().axis);
-  }
-  {
-    StageTimer t(times_.open_boundaries);
-    solver_.apply_open_boundaries();
-  }
-  {
-    StageTimer t(times_.collide_stream);
-    solver_.collide_stream(&*ahead);
-  }
-  // The nodes' work inside the kernel is the moving walls' (thread 0's clock).
-  times_.collide_stream -= ahead->seconds_in_kernel();
-  times_.moving_walls += ahead->seconds_in_kernel();
-  {
-    StageTimer t(times_.moving_walls);
-    link_defect_ = ahead->defect();
-    surface_mass_ = lbm::moving_wall::moving_surface_mass(links_.links, rho0);
-  }
-  add_loads_of_links(view);
-}
-
 void SphereCoupling::step(const ParticleView& view) {
   map_and_refill(view);
   {
@@ -194,10 +141,6 @@ void SphereCoupling::step(const ParticleView& view) {
   {
     StageTimer t(times_.static_walls);
     solver_.apply_wall_bounce_back();
-  }
-  if (moving_walls_in_kernel(view)) {
-    moving_walls_and_collide_stream(view);
-    return;
   }
   apply_moving_walls_and_force(view);
   {

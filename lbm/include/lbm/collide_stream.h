@@ -17,21 +17,6 @@ struct KernelSpan {
   int length = 0;
 };
 
-// Work a host does in the kernel's own pass over the lattice, each piece of it just ahead of
-// the cells it must precede (the moving walls' links and mass correction:
-// lbm/moving_wall/links_ahead.h), so that the lines it writes are still in the cache when
-// the kernel pulls them. Only with spans.
-class KernelAhead {
- public:
-  virtual ~KernelAhead() = default;
-  // Thread t of `threads` is going to compute the cells [first, last) in memory order
-  // (first == last: none). Called on every thread before any thread computes a cell; the
-  // threads wait for each other after it.
-  virtual void begin(int t, int threads, std::size_t first, std::size_t last) = 0;
-  // Thread t is about to compute its cells below `cell`.
-  virtual void before(int t, std::size_t cell) = 0;
-};
-
 // Everything the fused stream-collide kernel reads, resolved before the loop (no options
 // are looked up per cell). src holds post-collision populations f*(t) with the boundary
 // slots already filled, population q of cell c at src[q][c]; dst receives f*(t+1) the same
@@ -65,8 +50,6 @@ struct CollideStreamArgs {
   // the next step read four values per node instead of gathering 19 populations from 19
   // arrays. Non-fluid nodes get rho = 1 and u = -F/2.
   std::array<double*, 4> moments{};
-  // Where non-null (with spans), called ahead of the kernel's pieces (KernelAhead).
-  KernelAhead* ahead = nullptr;
 };
 
 // Pull stream + TRT collision (Guo forcing split into its even and odd parts) on every

@@ -102,8 +102,6 @@ class FluidSolver {
   // (lbm::open_face_node_density); rho0 where `cell` is no fluid node of an open face here.
   double open_face_density(std::size_t cell) const;
   void collide_stream();
-  // The same, with a host's work done in the kernel's pass ahead of it (KernelAhead).
-  void collide_stream(KernelAhead* ahead);
 
   // Reset every fluid node to equilibrium at density rho and velocity u.
   void initialise_equilibrium(double rho, const std::array<double, 3>& u);

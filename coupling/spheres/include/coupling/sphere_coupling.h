@@ -112,15 +112,6 @@ class SphereCoupling {
   const lbm::FluidSolver& solver() const { return solver_; }
 
  private:
-  // The loads of this step's links (their populations recorded) and of the open faces.
-  void add_loads_of_links(const ParticleView& view);
-  // Whether step() may do the moving walls in the kernel's pass (lbm/moving_wall/links_ahead.h):
-  // the same bits as the stages one after the other.
-  bool moving_walls_in_kernel(const ParticleView& view) const;
-  // The moving walls and their correction in the kernel's pass, after the open faces; then
-  // the loads.
-  void moving_walls_and_collide_stream(const ParticleView& view);
-
   lbm::FluidSolver& solver_;
   SphereCouplingOptions options_;
   SphereMapping mapping_;

@@ -20,10 +20,6 @@ namespace coupling {
 // at rho0. Each link is counted by the rank that owns its face node, from the first copy of
 // its particle in the view (periodic images give the same links), so no link counts twice.
 // `loads` indexed like the view; returns the number of links added on this rank.
-// Whether add_open_face_pressure would add anything on this rank (a sphere within R + 1 of
-// an open face this rank holds).
-bool any_sphere_near_open_face(const ParticleView& view, const lbm::FluidSolver& solver);
-
 std::size_t add_open_face_pressure(const ParticleView& view, const lbm::FluidSolver& solver,
                                    double rho_gauge, HydrodynamicLoads& loads);
 
