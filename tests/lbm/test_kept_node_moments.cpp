@@ -67,7 +67,7 @@ TEST_P(KeptNodeMoments, AreNodeMomentsOfTheStoredPopulationsBitForBit) {
   const int before = omp_get_max_threads();
   omp_set_num_threads(threads);
 #else
-  if (threads > 1) GTEST_SKIP() << "built without OpenMP";
+  (void)threads;  // without OpenMP every variant runs on one thread: the same checks
 #endif
   auto solver = stirred_solver(forced, incompressible);
   solver->keep_node_moments();

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <tuple>
 
 #include "cases/serial_flow.h"
 #include "lbm/d3q19.h"
@@ -38,16 +39,21 @@ TEST(MassConservation, ClosedBoxWithObstaclesAndForcing) {
 
 #include "lbm/checkpoint.h"
 
-// A run stopped, checkpointed and resumed continues exactly as an uninterrupted one.
-TEST(Checkpoint, ResumedRunMatchesUninterruptedRun) {
+// The small pore scene the checkpoint tests run: geometry, fluid, inlet drive.
+std::tuple<lbm::VoxelGeometry, lbm::FluidParameters, lbm::FlowDrive> checkpoint_scene() {
   // inlet, free, pore, outlet lengths, width, pore diameter (cells)
-  lbm::PoreSceneSpec spec{4, 2, 4, 4, 8, 5};
-  const auto g = lbm::make_pore_scene(spec);
+  const lbm::PoreSceneSpec spec{4, 2, 4, 4, 8, 5};
   lbm::FluidParameters p;
   p.periodic = {false, true, true};
   lbm::FlowDrive drive;
   drive.kind = lbm::FlowDrive::kInletVelocity;
   drive.inlet_velocity = 0.02;
+  return {lbm::make_pore_scene(spec), p, drive};
+}
+
+// A run stopped, checkpointed and resumed continues exactly as an uninterrupted one.
+TEST(Checkpoint, ResumedRunMatchesUninterruptedRun) {
+  const auto [g, p, drive] = checkpoint_scene();
   lbm::FluidSolver reference(g, p, drive, cases::serial_decomposition(g, p.periodic));
   for (int s = 0; s < 200; ++s) reference.step();
   lbm::FluidSolver first(g, p, drive, cases::serial_decomposition(g, p.periodic));
@@ -75,13 +81,7 @@ TEST(Checkpoint, ResumedRunMatchesUninterruptedRun) {
 // the part of every rank's file that it owns: here the two halves of a lattice split along
 // x, read from one rank's checkpoint and written back into one, node for node.
 TEST(Checkpoint, ReadOnAnotherDecomposition) {
-  lbm::PoreSceneSpec spec{4, 2, 4, 4, 8, 5};
-  const auto g = lbm::make_pore_scene(spec);
-  lbm::FluidParameters p;
-  p.periodic = {false, true, true};
-  lbm::FlowDrive drive;
-  drive.kind = lbm::FlowDrive::kInletVelocity;
-  drive.inlet_velocity = 0.02;
+  const auto [g, p, drive] = checkpoint_scene();
   lbm::FluidSolver whole(g, p, drive, cases::serial_decomposition(g, p.periodic));
   for (int s = 0; s < 60; ++s) whole.step();
   const std::string one = ::testing::TempDir() + "one_rank.checkpoint";
