@@ -181,8 +181,18 @@ def set_threads_per_rank(ranks_at_once):
     return int(os.environ["OMP_NUM_THREADS"])
 
 
-def _mpirun(mpirun, ranks):
-    return [mpirun, "--allow-run-as-root", "--oversubscribe", "-np", str(ranks)]
+def _mpirun(mpirun, ranks, launches_at_once=1):
+    return [mpirun, "--allow-run-as-root", "--oversubscribe", "-np", str(ranks)] + \
+        binding_options(launches_at_once)
+
+
+def binding_options(launches_at_once, threads=None):
+    """mpirun's binding for one launch. Each mpirun binds its first ranks to the node's first
+    cores, whatever the other mpiruns do: two 1-rank launches side by side would share core 0
+    while core 1 idles, and a rank's OpenMP threads would share its one core. So a launch binds
+    only when it runs alone with one thread per rank; otherwise the kernel places the ranks."""
+    threads = threads or int(os.environ.get("OMP_NUM_THREADS") or 1)
+    return [] if launches_at_once <= 1 and threads <= 1 else ["--bind-to", "none"]
 
 
 # The launches under way (each in its own process group), so that a runner asked to stop can
@@ -241,14 +251,14 @@ def _execute(cmd, cwd, stdout_path, timeout):
                 _RUNNING.discard(proc)
 
 
-def _study_command(driver, launch_dir, nruns, partitions, ranks_per_run, mpirun):
+def _study_command(driver, launch_dir, nruns, partitions, ranks_per_run, mpirun, launches_at_once=1):
     cmd = [driver]
     if partitions > 1:
         cmd += ["-partition", f"{partitions}x{ranks_per_run}"]
     cmd += ["-in", STUDY_SCRIPT, "-var", "launch", launch_dir, "-var", "nruns", str(nruns),
             "-log", os.path.join(launch_dir, "log.study")]
     if partitions * ranks_per_run > 1 or mpirun:
-        cmd = _mpirun(mpirun or "mpirun", partitions * ranks_per_run) + cmd
+        cmd = _mpirun(mpirun or "mpirun", partitions * ranks_per_run, launches_at_once) + cmd
     return cmd
 
 
@@ -346,7 +356,7 @@ def launch_pool(driver, study_dir, runs, parallel, ranks_per_run, mpirun, timeou
             launch_dir = os.path.join(run_dir, "launch")
             os.makedirs(launch_dir, exist_ok=True)
             write_run_file(launch_dir, 1, run_dir, launch_knobs, study_scene(study_dir))
-            cmd = _study_command(driver, launch_dir, 1, 1, ranks_per_run, mpirun)
+            cmd = _study_command(driver, launch_dir, 1, 1, ranks_per_run, mpirun, parallel)
             start = time.time()
             if progress:
                 progress.started(name, launch_knobs)

@@ -72,15 +72,12 @@ def main():
     parser.add_argument("study", choices=sorted(studies.STUDIES))
     parser.add_argument("--size", default="quick", choices=sorted(studies.SIZES))
     parser.add_argument("--out", help="study folder (default ./<study>_<size>)")
-    # At the paper size one 2-rank run at a time does about twice the runs per hour of two
-    # 1-rank runs side by side on 2 cores (bench_paper_run's
-    # paper_run_paper_side_by_side_runs_per_hour_vs_one_two_rank_run, doc/performance.md: two
-    # whole lattices do not share the last-level cache that two halves do); the smaller sizes
-    # keep two runs side by side.
-    parser.add_argument("--parallel", type=int, default=None,
-                        help="runs at a time (partitions); default 1 at --size paper, else 2")
-    parser.add_argument("--ranks-per-run", type=int, default=None,
-                        help="default 2 at --size paper, else 1")
+    # Two 1-rank runs side by side on 2 cores do about a tenth more runs per hour than one
+    # 2-rank run at a time (bench_paper_run's
+    # paper_run_paper_side_by_side_runs_per_hour_vs_one_two_rank_run, doc/performance.md):
+    # a 2-rank run spends part of each DEM substep waiting at the ranks' exchanges.
+    parser.add_argument("--parallel", type=int, default=2, help="runs at a time (default 2)")
+    parser.add_argument("--ranks-per-run", type=int, default=1, help="MPI ranks per run (default 1)")
     parser.add_argument("--mode", default="pool", choices=["pool", "partitions"])
     parser.add_argument("--driver", default=DEFAULT_DRIVER)
     parser.add_argument("--mpirun", default=None,
@@ -103,10 +100,6 @@ def main():
                              "while the study runs, from another shell)")
     parser.add_argument("--no-analysis", action="store_true")
     args = parser.parse_args()
-    if args.parallel is None:
-        args.parallel = 1 if args.size == "paper" else 2
-    if args.ranks_per_run is None:
-        args.ranks_per_run = 2 if args.size == "paper" else 1
 
     runs = studies.runs_of(args.study, args.size)
     runs += [parse_added_run(text, runs[0][1]) for text in args.add_run]

@@ -502,5 +502,28 @@ class StudyThreads(unittest.TestCase):
                 os.environ["OMP_NUM_THREADS"] = saved
 
 
+class StudyBinding(unittest.TestCase):
+    """Each mpirun binds its ranks to the node's first cores whatever the other mpiruns do:
+    two 1-rank launches side by side shared core 0, and a rank's threads shared its one core."""
+
+    def test_a_launch_binds_only_alone_on_one_thread_per_rank(self):
+        import ensemble
+        self.assertEqual(ensemble.binding_options(1, threads=1), [])
+        self.assertEqual(ensemble.binding_options(2, threads=1), ["--bind-to", "none"])
+        self.assertEqual(ensemble.binding_options(1, threads=2), ["--bind-to", "none"])
+
+    def test_an_unbound_launch_may_run_on_every_core(self):
+        import ensemble
+        import subprocess
+        def allowed(options):
+            out = subprocess.run(["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", "1"] + options +
+                                 ["grep", "Cpus_allowed_list", "/proc/self/status"],
+                                 capture_output=True, text=True, check=True).stdout
+            return out.split()[-1]
+        with open("/proc/self/status") as f:
+            ours = [line.split()[-1] for line in f if line.startswith("Cpus_allowed_list")][0]
+        self.assertEqual(allowed(ensemble.binding_options(2, threads=1)), ours)
+
+
 if __name__ == "__main__":
     unittest.main()

@@ -130,9 +130,13 @@ def thermo_rows(text):
     return rows
 
 
-def scene_command(args, knobs, driver=None, ranks=RANKS):
-    cmd = [args.mpirun, "-np", str(ranks), "--allow-run-as-root", "--oversubscribe",
-           os.path.abspath(driver or args.driver), "-in", os.path.abspath(args.script)]
+def scene_command(args, knobs, driver=None, ranks=RANKS, bound=True):
+    """bound=False for a rank of several threads and for runs side by side: every mpirun binds
+    its first ranks to the first cores, whatever the other mpiruns do, so two 1-rank runs
+    would share core 0 and a rank's threads its one core."""
+    cmd = [args.mpirun, "-np", str(ranks), "--allow-run-as-root", "--oversubscribe"]
+    cmd += [] if bound else ["--bind-to", "none"]
+    cmd += [os.path.abspath(driver or args.driver), "-in", os.path.abspath(args.script)]
     for name, value in knobs.items():
         cmd += ["-var", name, str(value)]
     return cmd
@@ -140,7 +144,7 @@ def scene_command(args, knobs, driver=None, ranks=RANKS):
 
 def run_scene(args, work, knobs, driver=None, ranks=RANKS, threads=1):
     env = dict(os.environ, OMP_NUM_THREADS=str(threads))
-    done = subprocess.run(scene_command(args, knobs, driver, ranks), cwd=work, env=env,
+    done = subprocess.run(scene_command(args, knobs, driver, ranks, bound=threads == 1), cwd=work, env=env,
                           capture_output=True, text=True, errors="replace")
     return done.returncode, done.stdout + done.stderr
 
@@ -248,7 +252,8 @@ def side_by_side_seconds(args, state, folder):
     try:
         env = dict(os.environ, OMP_NUM_THREADS="1")
         start = time.monotonic()
-        runs = [subprocess.Popen(scene_command(args, resume_knobs(args, state, folder, w, "1 1 1"), ranks=1),
+        runs = [subprocess.Popen(scene_command(args, resume_knobs(args, state, folder, w, "1 1 1"), ranks=1,
+                                               bound=False),
                                  cwd=w, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
                 for w in works]
         codes = [r.wait() for r in runs]
