@@ -155,8 +155,9 @@ def porediameter(size):
     runs = []
     for D in diameters:
         for s in seeds:
-            # the appendix's L = 4.22 d; f_walls[2] (the wall's hold on the particles) gives f_a
-            knobs = _base(size, seed=s, thermo_extra="f_walls[2]")
+            # the appendix's L = 4.22 d; in.pore's f_walls[2] (the wall's hold on the
+            # particles) gives f_a
+            knobs = _base(size, seed=s)
             knobs.update(scene(knobs["cells_per_d"], D=D, Lp=4.22))
             runs.append((f"D_{D:.2f}_seed_{s}", knobs))
     return runs
@@ -215,9 +216,9 @@ def with_n_dem(knobs, n_dem):
 def calibration(size):
     """The inlet velocity, which the paper does not give: the table's scene at the paper's
     resolution, u_lattice from 0.02 down, two seeds each (seed-major order, so that a study
-    cut short has every velocity once). Thermo rows every 10 fluid steps with the wall's
-    force along the flow (f_walls[2]) and the fluid's on the particles (f_pore[14]), to read
-    the hold at each pressure peak. quick: 2 x 10^5 fluid steps per run, and u_lattice
+    cut short has every velocity once). Thermo rows every 10 fluid steps, with in.pore's
+    wall force along the flow (f_walls[2]) and the fluid's on the particles (f_pore[14]), to
+    read the hold at each pressure peak. quick: 2 x 10^5 fluid steps per run, and u_lattice
     0.00125 over 4 x 10^5; paper: 10^6.
     Beside them (quick and paper), the runs at u_lattice 0.005 again with N_DEM = 20 DEM
     substeps per fluid step instead of 100 (names ending in _n_dem_20): whether the
@@ -236,7 +237,7 @@ def calibration(size):
         for u in velocities:
             # the deposit bound these runs were made with, a tenth of each one's inlet velocity
             # (d per time unit: u_in = u_lattice / 7.1), so that the tables repeat
-            knobs = _base(size, seed=seed, u_lattice=u, thermo_extra="f_walls[2] f_pore[14]",
+            knobs = _base(size, seed=seed, u_lattice=u,
                           deposit_speed=f"{0.1 * u / PAPER_CELLS_PER_D:.6g}", **lengths)
             knobs.update(scene(knobs["cells_per_d"]))
             if size != "tiny":

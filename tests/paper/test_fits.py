@@ -476,6 +476,46 @@ class RunLength(unittest.TestCase):
         self.assertEqual(by_length[1e6], 0.21)
 
 
+class DepositHold(unittest.TestCase):
+    """figures/hold.py: the wall's hold and the fluid's force on the particles against the
+    paper's load P pi D^2 / 4, per burst, on runs with known forces."""
+
+    def run_with_forces(self, folder, load, wall, fluid=None):
+        run = write_run(folder, 0.05, [(1.0, 0.1, 0.2), (2.0, 0.2, 0.4)])
+        with open(os.path.join(folder, "bursts.txt")) as f:
+            lines = f.read().splitlines()
+        rows = [line.split() for line in lines[1:]]
+        for row in rows:
+            row[10], row[12] = repr(-wall), repr(load)
+        with open(os.path.join(folder, "bursts.txt"), "w") as f:
+            f.write("\n".join([lines[0]] + [" ".join(r) for r in rows]) + "\n")
+        if fluid is not None:
+            with open(os.path.join(folder, "log.liggghts")) as f:
+                log = f.read().splitlines()
+            log = [line + " pore[14]" if line.startswith("Step") else
+                   line + f" {fluid!r}" if line[:1].isdigit() else line for line in log]
+            with open(os.path.join(folder, "log.liggghts"), "w") as f:
+                f.write("\n".join(log) + "\n")
+        return run
+
+    def test_ratios_of_known_forces(self):
+        from figures import hold
+        with tempfile.TemporaryDirectory() as tmp:
+            runs = [self.run_with_forces(os.path.join(tmp, "a"), load=2.0, wall=1.0, fluid=1.25),
+                    self.run_with_forces(os.path.join(tmp, "b"), load=4.0, wall=2.0)]
+            summary = dict(runs=runs, finished=2, study="hold", size="tiny", core_hours=0.0)
+            r = hold.analyze(summary, tmp)["ratios"]
+        self.assertAlmostEqual(r["wall_over_load"]["median"], 0.5, places=12)
+        self.assertAlmostEqual(r["wall_over_load"]["low"], 0.5, places=12)  # both runs alike
+        # the fluid's force only where the rows carry it (run a)
+        self.assertAlmostEqual(r["fluid_over_load"]["per_run"]["a"], 0.625, places=12)
+        self.assertTrue(math.isnan(r["fluid_over_load"]["per_run"]["b"]))
+        self.assertAlmostEqual(r["wall_over_fluid"]["median"], 0.8, places=12)
+        # the excess load is the load of P - P_0: P_0 = 0.05 at peaks 0.2 and 0.4
+        self.assertAlmostEqual(r["fluid_over_excess_load"]["per_run"]["a"],
+                               float(np.median([1.25 / (2.0 * 0.15 / 0.2), 1.25 / (2.0 * 0.35 / 0.4)])), places=12)
+
+
 class StudyThreads(unittest.TestCase):
     """Runs side by side share the cores: each rank gets its share as OpenMP threads, unless
     the user chose (two runs of two threads each on two cores ran ten times slower)."""

@@ -1,0 +1,86 @@
+"""What holds a deposit at its pressure peak: the force balance behind the paper's K.
+
+The paper's theory (Sec. III) has adhesion hold the whole load of the pressure loss on the
+pore's section, P pi D^2 / 4, so that P = 4 f_a L_dep / D. Per burst of every finished run:
+
+- load: P_pi_D2_4, the burst record's P_peak pi D^2 / 4 (force units);
+- wall: the wall's force on all particles along the flow at the peak, -wall_F (the record's);
+- fluid: the fluid's force on all particles along the flow at the peak (f_pore[14], the
+  thermo row nearest the peak; runs whose rows lack it give none);
+- excess load: the load of P - P_0 only (P_0: the run's particle-free pressure loss,
+  figures.common.clean_pressure), the pressure the deposit adds.
+
+wall / fluid near 1 says the particles are at rest on the wall (no other body holds them);
+fluid / load below 1 says the fluid puts the rest of the load on the pore's solid walls
+directly: the flow through and around the deposit, and the clean pore's own loss P_0.
+Medians over all bursts with 95 % intervals over runs (fit_stats.bootstrap: whole runs
+resampled) where there are two runs or more."""
+import numpy as np
+
+from figures.common import bursts, clean_pressure, finished_runs, plt, result, save, thermo
+from fit_stats import bootstrap, fmt
+
+RATIOS = (("wall_over_load", "wall / (P pi D^2/4)"), ("fluid_over_load", "fluid / (P pi D^2/4)"),
+          ("wall_over_fluid", "wall / fluid"), ("fluid_over_excess_load", "fluid / ((P - P_0) pi D^2/4)"))
+
+
+def burst_forces(run):
+    """Per burst: (load, wall, fluid, excess load), fluid NaN where the rows lack f_pore[14]."""
+    columns = thermo(run["folder"])
+    steps = np.asarray(columns.get("Step", []), float)
+    fluid_column = np.asarray(columns.get("pore[14]", []), float)
+    p0 = clean_pressure(run)
+    out = []
+    for b in bursts(run["folder"]):
+        load = b["P_pi_D2_4"]
+        fluid = np.nan
+        if len(fluid_column) and len(steps):
+            fluid = float(fluid_column[int(np.argmin(np.abs(steps - b["step"])))])
+        excess = load * (b["P_peak"] - p0) / b["P_peak"] if np.isfinite(p0) and b["P_peak"] > 0 else np.nan
+        out.append((load, -b["wall_F"], fluid, excess))
+    return out
+
+
+def ratios(forces):
+    """{ratio name: values} of one run's bursts (see RATIOS)."""
+    a = np.asarray(forces, float).reshape(-1, 4)
+    load, wall, fluid, excess = a.T
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return {"wall_over_load": wall / load, "fluid_over_load": fluid / load,
+                "wall_over_fluid": wall / fluid, "fluid_over_excess_load": fluid / excess}
+
+
+def median_of_finite(x, y):
+    y = np.asarray(y, float)
+    y = y[np.isfinite(y)]
+    return float(np.median(y)) if len(y) else np.nan
+
+
+def analyze(summary, out_dir):
+    runs = {run["name"]: ratios(burst_forces(run)) for run in finished_runs(summary)}
+    table, texts = {}, []
+    for key, label in RATIOS:
+        groups = [(v[key], v[key]) for v in runs.values() if np.isfinite(v[key]).any()]
+        value = bootstrap(groups, median_of_finite)
+        table[key] = dict(median=value[0], low=value[1], high=value[2],
+                          per_run={name: median_of_finite(None, v[key]) for name, v in runs.items()})
+        if groups:
+            texts.append(f"{label} {fmt(*value)}")
+    fig, axes = plt.subplots(1, 2, figsize=(9, 3.6))
+    for name, run in zip(runs, finished_runs(summary)):
+        a = np.asarray(burst_forces(run), float).reshape(-1, 4)
+        axes[0].plot(a[:, 0], a[:, 1], "o", ms=3, alpha=0.7, label=name)
+        axes[1].plot(a[:, 2], a[:, 1], "o", ms=3, alpha=0.7)
+    for ax, xlabel in zip(axes, ("load P pi D^2 / 4 at the peak", "fluid's force on the particles")):
+        top = max([abs(v) for line in ax.get_lines() for v in line.get_xdata() if np.isfinite(v)] + [1e-30])
+        ax.plot([0, top], [0, top], "k:", lw=1, label="all of it")
+        ax.set_xlabel(xlabel + " [N]")
+        ax.set_ylabel("wall's hold along the flow [N]")
+    axes[0].legend(fontsize=6)
+    axes[0].set_title("the wall's hold against the paper's load", fontsize=9)
+    axes[1].set_title("the wall's hold against the fluid's force", fontsize=9)
+    ours = "; ".join(texts) if texts else "no bursts in finished runs"
+    return result(summary, "hold", "what holds a deposit at its peak (force ratios, medians over bursts)",
+                  "adhesion holds the whole load P pi D^2 / 4 (the theory behind K = 4 f_a)",
+                  ours, save(fig, out_dir, "hold"), ratios=table,
+                  bursts_per_run={name: int(len(v["wall_over_load"])) for name, v in runs.items()})
