@@ -20,6 +20,10 @@ import numpy as np
 from figures.common import bursts, clean_pressure, finished_runs, plt, result, save, thermo
 from fit_stats import bootstrap, fmt
 
+# The fluid's share of the load by the height of the peak [P_out]: does it rise as the
+# deposit closes the pore?
+PEAK_BANDS = ((0.0, 0.15), (0.15, 0.25), (0.25, float("inf")))
+
 RATIOS = (("wall_over_load", "wall / (P pi D^2/4)"), ("fluid_over_load", "fluid / (P pi D^2/4)"),
           ("wall_over_fluid", "wall / fluid"), ("fluid_over_excess_load", "fluid / ((P - P_0) pi D^2/4)"))
 
@@ -48,6 +52,23 @@ def ratios(forces):
     with np.errstate(divide="ignore", invalid="ignore"):
         return {"wall_over_load": wall / load, "fluid_over_load": fluid / load,
                 "wall_over_fluid": wall / fluid, "fluid_over_excess_load": fluid / excess}
+
+
+def share_by_peak(summary):
+    """Per band of PEAK_BANDS: (bursts, median fluid / load) over every finished run's bursts
+    whose rows carry the fluid's force."""
+    peaks, shares = [], []
+    for run in finished_runs(summary):
+        r = ratios(burst_forces(run))["fluid_over_load"]
+        peaks += [b["P_peak"] for b in bursts(run["folder"])]
+        shares += list(r)
+    peaks, shares = np.asarray(peaks, float), np.asarray(shares, float)
+    bands = []
+    for low, high in PEAK_BANDS:
+        inside = (peaks >= low) & (peaks < high) & np.isfinite(shares)
+        bands.append(dict(low=low, high=high, bursts=int(inside.sum()),
+                          median=float(np.median(shares[inside])) if inside.any() else np.nan))
+    return bands
 
 
 def median_of_finite(x, y):
@@ -79,8 +100,11 @@ def analyze(summary, out_dir):
     axes[0].legend(fontsize=6)
     axes[0].set_title("the wall's hold against the paper's load", fontsize=9)
     axes[1].set_title("the wall's hold against the fluid's force", fontsize=9)
+    bands = share_by_peak(summary)
+    texts += [f"fluid / load {b['median']:.2f} at {b['bursts']} peaks in [{b['low']:g}, {b['high']:g}) P_out"
+              for b in bands if b["bursts"]]
     ours = "; ".join(texts) if texts else "no bursts in finished runs"
     return result(summary, "hold", "what holds a deposit at its peak (force ratios, medians over bursts)",
                   "adhesion holds the whole load P pi D^2 / 4 (the theory behind K = 4 f_a)",
-                  ours, save(fig, out_dir, "hold"), ratios=table,
+                  ours, save(fig, out_dir, "hold"), ratios=table, fluid_share_by_peak=bands,
                   bursts_per_run={name: int(len(v["wall_over_load"])) for name, v in runs.items()})
