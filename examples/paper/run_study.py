@@ -72,10 +72,10 @@ def main():
     parser.add_argument("study", choices=sorted(studies.STUDIES))
     parser.add_argument("--size", default="quick", choices=sorted(studies.SIZES))
     parser.add_argument("--out", help="study folder (default ./<study>_<size>)")
-    # Two 1-rank runs side by side on 2 cores do about a tenth more runs per hour than one
-    # 2-rank run at a time (bench_paper_run's
-    # paper_run_paper_side_by_side_runs_per_hour_vs_one_two_rank_run, doc/performance.md):
-    # a 2-rank run spends part of each DEM substep waiting at the ranks' exchanges.
+    # Two 1-rank runs side by side on 2 cores and one 2-rank run at a time are about even in
+    # runs per hour (bench_paper_run's
+    # paper_run_paper_side_by_side_runs_per_hour_vs_one_two_rank_run, doc/performance.md:
+    # 1.08 at the median of six rounds, 0.82-1.51); 1-rank runs need no MPI exchange.
     parser.add_argument("--parallel", type=int, default=2, help="runs at a time (default 2)")
     parser.add_argument("--ranks-per-run", type=int, default=1, help="MPI ranks per run (default 1)")
     parser.add_argument("--mode", default="pool", choices=["pool", "partitions"])
