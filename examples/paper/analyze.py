@@ -62,6 +62,7 @@ def analyze(study_dir, figure=None, as_it_stands=False, out=None):
     module = importlib.import_module(f"figures.{figure or summary['study']}")
     result = module.analyze(summary, out_dir)
     result["core_hours"] = round(summary["core_hours"], 4)
+    result["core_hours_exact"] = bool(summary.get("core_hours_exact", False))
     result["runs_of_study"] = summary["study"]
     result["as_it_stands"] = partial
     saved = dict(result)
@@ -70,7 +71,8 @@ def analyze(study_dir, figure=None, as_it_stands=False, out=None):
     with open(os.path.join(out_dir, "results.json"), "w") as f:
         json.dump(_plain(saved), f, indent=1)
     print(f"| {result['figure']} | {result['paper']} | {result['ours']} | "
-          f"{result['finished']}/{result['runs']} runs, {result['core_hours']} core-h"
+          f"{result['finished']}/{result['runs']} runs, "
+          f"{'' if result['core_hours_exact'] else 'at least '}{result['core_hours']:.3g} core-h"
           + (f"; as they stand: {', '.join(partial)}" if partial else "") + " |")
     return result
 

@@ -2,7 +2,8 @@
 """Copies what a study's evidence needs into a small folder that can be kept in the
 repository (a study's own folder holds restart files and fluid checkpoints of tens of MB):
 summary.txt, results.json and the plots, the analysis's table if any, and per run its
-bursts.txt, its deposit speed survey (deposit_speeds.txt) if any, and the thermo columns the analyses read (thermo.csv, every `every`-th row and
+bursts.txt, its cost (cost.txt, run_cost), its deposit speed survey (deposit_speeds.txt) if
+any, and the thermo columns the analyses read (thermo.csv, every `every`-th row and
 every row from a burst's window before its peak, BURST_WINDOW fluid steps, to half a window
 after it), with the ERROR line of a run that stopped. analyze.py reads the compacted folder
 as it reads the study (study_io).
@@ -19,6 +20,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import study_io  # noqa: E402
 from ensemble import run_state  # noqa: E402
+import run_cost  # noqa: E402
 
 # pore[27]: P across the pore; pore[28-33]: the deposited count under the scaled speed bounds
 COLUMNS = ("Step", "Atoms", "pore[16]", "pore[17]", "pore[7]", "pore[6]", "pore[8]", "pore[10]",
@@ -40,7 +42,7 @@ def compact(study, dest, every=10):
         name = os.path.basename(run)
         out = os.path.join(dest, "runs", name)
         os.makedirs(out, exist_ok=True)
-        for keep in ("bursts.txt", "knobs.json", "deposit_speeds.txt"):
+        for keep in ("bursts.txt", "knobs.json", "deposit_speeds.txt", run_cost.COST_FILE):
             if os.path.exists(os.path.join(run, keep)):
                 shutil.copy(os.path.join(run, keep), out)
         state, reason = run_state(run)

@@ -31,6 +31,8 @@ import subprocess
 import threading
 import time
 
+import run_cost
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 STUDY_SCRIPT = os.path.join(HERE, "in.study")
 SCENE_SCRIPT = os.path.join(os.path.dirname(HERE), "pore", "in.pore")
@@ -324,7 +326,9 @@ def launch_partitions(driver, study_dir, runs, partitions, ranks_per_run, mpirun
         if progress:
             for name in batch:
                 progress.started(name, launch_knobs[name])
-        code = _execute(cmd, launch_dir, os.path.join(launch_dir, "stdout.txt"), timeout)
+        with run_cost.LaunchClock([os.path.join(study_dir, "runs", name) for name in batch],
+                                  ranks_per_run):
+            code = _execute(cmd, launch_dir, os.path.join(launch_dir, "stdout.txt"), timeout)
         if progress:
             for name in batch:
                 progress.stopped(name)
@@ -360,7 +364,8 @@ def launch_pool(driver, study_dir, runs, parallel, ranks_per_run, mpirun, timeou
             start = time.time()
             if progress:
                 progress.started(name, launch_knobs)
-            code = _execute(cmd, launch_dir, os.path.join(run_dir, "stdout.txt"), timeout)
+            with run_cost.LaunchClock([run_dir], ranks_per_run):
+                code = _execute(cmd, launch_dir, os.path.join(run_dir, "stdout.txt"), timeout)
             if progress:
                 progress.stopped(name)
             made.append(dict(command=cmd, runs=[name], exit_code=code,
@@ -375,7 +380,8 @@ def launch_pool(driver, study_dir, runs, parallel, ranks_per_run, mpirun, timeou
 
 def write_summary(study_dir, study, size, runs, launches, mode):
     """summary.json and summary.txt: every run with its state, the reason of a failure, its
-    largest P / P_out and burst count from its own log, and the wall time of the launches."""
+    largest P / P_out and burst count from its own log, and its core-hours over all its
+    launches (run_cost)."""
     from study_io import run_figures  # local import: study_io needs examples/pore on the path
     entries = []
     for name, knobs in runs:
@@ -383,9 +389,13 @@ def write_summary(study_dir, study, size, runs, launches, mode):
         state, reason = run_state(run_dir)
         entry = dict(name=name, state=state, reason=reason, folder=run_dir, knobs=knobs)
         entry.update(run_figures(run_dir, int(knobs.get("warmup", 0))))
+        entry["core_hours"], entry["core_hours_exact"] = run_cost.run_core_hours(run_dir)
         entries.append(entry)
+    # Every launch of every run, this runner's and earlier ones' (run_cost).
+    core_hours = sum(e["core_hours"] for e in entries)
+    exact = all(e["core_hours_exact"] for e in entries)
     summary = dict(study=study, size=size, mode=mode, runs=entries, launches=launches,
-                   core_hours=sum(l["seconds"] * l["cores"] for l in launches) / 3600.0,
+                   core_hours=core_hours, core_hours_exact=exact,
                    finished=sum(e["state"] == "done" for e in entries),
                    failed=sum(e["state"] == "failed" for e in entries),
                    incomplete=sum(e["state"] == "incomplete" for e in entries))
@@ -396,6 +406,7 @@ def write_summary(study_dir, study, size, runs, launches, mode):
     for e in entries:
         figures = (f"max P/P_out {e['max_P']:.4g}, bursts {e['bursts']}"
                    if e.get("max_P") is not None else "no thermo rows")
+        figures += f", {'' if e['core_hours_exact'] else 'at least '}{e['core_hours']:.2f} core-h"
         lines.append(f"  {e['name']:<28} {e['state']:<10} {figures}"
                      + (f"  -- {e['reason']}" if e["reason"] else ""))
     with open(os.path.join(study_dir, "summary.txt"), "w") as f:

@@ -106,7 +106,10 @@ def main():
     changed = dict(parse_added_run(":" + ",".join(args.set), {})[1]) if args.set else {}
     runs = [(name, restart_knobs(dict(knobs, **changed), args.restart_every)) for name, knobs in runs]
     out = os.path.abspath(args.out or f"{args.study}_{args.size}")
-    paper_cost = studies.core_hours(studies.runs_of(args.study, "paper"))
+    paper_runs = studies.runs_of(args.study, "paper")
+    paper_cost = studies.core_hours(paper_runs)
+    fluid_steps = max((int(k["steps"]) + int(k["warmup"])) / studies.run_dem_steps_per_fluid_step(k)
+                      for _, k in paper_runs)
     cost = studies.core_hours(runs)
     cores = args.parallel * args.ranks_per_run
     threads = ensemble.set_threads_per_rank(cores)
@@ -114,7 +117,7 @@ def main():
           f"({args.parallel} at a time, {args.ranks_per_run} rank(s) each, {threads} OpenMP thread(s) per rank)")
     print(f"estimated cost: {cost:.3g} core-hours ({cost / cores:.3g} h on {cores} cores); "
           f"the paper size: {paper_cost:.3g} core-hours "
-          f"({len(studies.runs_of(args.study, 'paper'))} runs of 10^6 fluid steps)", flush=True)
+          f"({len(paper_runs)} runs of {fluid_steps:.3g} fluid steps)", flush=True)
     for name, knobs in runs:
         print(f"  {name}: " + " ".join(f"-var {k} {shlex.quote(str(v))}"
                                        for k, v in sorted(knobs.items())))

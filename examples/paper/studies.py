@@ -8,8 +8,12 @@ diameters d) that differ in a seed or a swept knob, in three sizes:
          fewer seeds and points, 2-4 % of the paper's run length. in.pore coarsens by
          acoustic scaling (its header): the fluid step grows to 1.42, tau to 0.852, so the
          viscosity, the inlet speed, P_out and the DEM step stay the paper's
-  paper  the paper's counts and 10^6 fluid steps (10^8 DEM steps) per run at 7.1 cells per d,
-         in the regime the calibration chose (PAPER_REGIME)
+  paper  the paper's resolution (7.1 cells per d) and run length (10^6 fluid steps, 10^8 DEM
+         steps), in the regime the calibration chose (PAPER_REGIME), on seeds the examples do
+         not use (STUDY_SEEDS); the phase diagrams and conc 2.5 x 10^5 fluid steps
+         (PHASE_DIAGRAM_STEPS). The counts are what two cores can afford, at least those
+         doc/paper.md's criteria need, not the paper's (80 runs for porediameter alone, some
+         950 core-hours)
 
 A run is (name, knobs): the knobs are in.pore's -var names with their values. Lengths go
 through `scene`, which rounds them to whole cells of 1 / cells_per_d, as fix lbm/pore needs.
@@ -135,26 +139,50 @@ def collection(size):
     return [("snapshot", _base(size, seed=100003, vtk_every=every))]
 
 
+# The paper size's seeds, none of which the examples, the calibration or the settings study
+# use (those: 100003 and 101009, 200003-202021, 300007 and 300017): each study its own block.
+STUDY_SEEDS = dict(porediameter=400009, porelength=410009, dropvol=420013, phase=430019)
+
+# The phase diagrams' and conc's run at the paper size, in DEM steps after the warm-up:
+# 2.5 x 10^5 fluid steps in all, the shortest length whose P_max came within 10 % of the
+# paper length's (doc/paper.md, "The studies' settings").
+PHASE_DIAGRAM_STEPS = 25000000 - 200000
+
+
+def _study_seeds(size, study, tiny, quick, paper):
+    """The seeds of a study: at the paper size from its STUDY_SEEDS block, else the quick
+    sizes' (from 100003)."""
+    n = _counts(size, tiny, quick, paper)
+    return _seeds(n, first=STUDY_SEEDS[study]) if size == "paper" else _seeds(n)
+
+
 def dropvol(size):
-    return [(f"seed_{s}", _base(size, seed=s)) for s in _seeds(_counts(size, 2, 6, 100))]
+    """Every burst at the default pore over seeds; at the paper size four new seeds beside
+    the paper-length run of the calibration (seed 100003, doc/calibration/paper_run), which
+    analyze.py takes with them."""
+    return [(f"seed_{s}", _base(size, seed=s)) for s in _study_seeds(size, "dropvol", 2, 6, 4)]
 
 
 def porelength(size):
-    lengths = _counts(size, PORE_LENGTHS[5:7], PORE_LENGTHS[1::2], PORE_LENGTHS)
+    # paper: every other of the paper's lengths from 0.70 d (0.70, 2.11, ... 7.75), one seed
+    lengths = _counts(size, PORE_LENGTHS[5:7], PORE_LENGTHS[1::2], PORE_LENGTHS[1::2])
+    seed, = _study_seeds(size, "porelength", 1, 1, 1)
     runs = []
     for L in lengths:
-        knobs = _base(size, seed=100003)
+        knobs = _base(size, seed=seed)
         knobs.update(scene(knobs["cells_per_d"], Lp=L))
         runs.append((f"L_{L:.2f}", knobs))
     return runs
 
 
 def porediameter(size):
-    diameters = _counts(size, PORE_DIAMETERS[3:5], PORE_DIAMETERS[1::2], PORE_DIAMETERS)
-    seeds = _seeds(_counts(size, 1, 1, 10))
+    # paper: D = 2.11, 2.82, 3.52, 4.23 d, two seeds each, seed-major so that a study cut
+    # short has every diameter once (the slope per D, then the slopes against D, needs them)
+    diameters = _counts(size, PORE_DIAMETERS[3:5], PORE_DIAMETERS[1::2], PORE_DIAMETERS[1:5])
+    seeds = _study_seeds(size, "porediameter", 1, 1, 2)
     runs = []
-    for D in diameters:
-        for s in seeds:
+    for s in seeds:
+        for D in diameters:
             # the appendix's L = 4.22 d; in.pore's f_walls[2] (the wall's hold on the
             # particles) gives f_a
             knobs = _base(size, seed=s)
@@ -163,13 +191,22 @@ def porediameter(size):
     return runs
 
 
+def _phase_base(size, **knobs):
+    """A run of a phase diagram or of conc: at the paper size PHASE_DIAGRAM_STEPS long, on the
+    phase block's seed."""
+    seed, = _study_seeds(size, "phase", 1, 1, 1)
+    extra = dict(steps=PHASE_DIAGRAM_STEPS) if size == "paper" else {}
+    return _base(size, seed=seed, **extra, **knobs)
+
+
 def phaseac(size):
-    ka = _counts(size, [0.05, 0.1], [0.03, 0.1, 0.3], [0.02, 0.04, 0.06, 0.1, 0.15, 0.2, 0.3])
-    kc = _counts(size, [0.1], [0.01, 1.0], [0.001, 0.01, 0.1, 1.0, 10.0])
+    # paper: 3 x 3, k_c over two decades around the table's 0.1
+    ka = _counts(size, [0.05, 0.1], [0.03, 0.1, 0.3], [0.03, 0.1, 0.3])
+    kc = _counts(size, [0.1], [0.01, 1.0], [0.01, 0.1, 1.0])
     runs = []
     for a in ka:
         for c in kc:
-            knobs = _base(size, seed=100003, ka=a, kc=c)
+            knobs = _phase_base(size, ka=a, kc=c)
             knobs.update(scene(knobs["cells_per_d"], Lp=6.45))
             runs.append((f"ka_{a:g}_kc_{c:g}", knobs))
     return runs
@@ -179,27 +216,28 @@ def phasead(size):
     """The caption's sweep: "since we change here the particle diameter", at L = 1.2 D. The
     pore stays the default's D; the particles' mean diameter d_particle (in the table's unit d,
     which keeps the table's coefficients) is d / D times D."""
-    ka = _counts(size, [0.1], [0.03, 0.1, 0.3], [0.02, 0.04, 0.06, 0.1, 0.15, 0.2, 0.3])
-    d_over_D = _counts(size, [0.25, 0.3], [0.2, 0.36], [0.15, 0.2, 0.25, 0.3, 0.35, 0.4])
+    ka = _counts(size, [0.1], [0.03, 0.1, 0.3], [0.03, 0.1])
+    d_over_D = _counts(size, [0.25, 0.3], [0.2, 0.36], [0.2, 0.28, 0.36])
     runs = []
     for a in ka:
         for r in d_over_D:
-            knobs = _base(size, seed=100003, ka=a, d_particle=f"{r * PAPER['D']:.6g}")
+            knobs = _phase_base(size, ka=a, d_particle=f"{r * PAPER['D']:.6g}")
             knobs.update(scene(knobs["cells_per_d"], Lp=1.2 * PAPER["D"]))
             runs.append((f"ka_{a:g}_d_over_D_{r:g}", knobs))
     return runs
 
 
 def conc(size):
+    # paper: around the paper's onset, 0.013, by factors of about two
     values = _counts(size, [0.02, 0.05], [0.0, 0.01, 0.02, 0.05, 0.1],
-                     [0.0, 0.005, 0.01, 0.013, 0.02, 0.03, 0.04, 0.05, 0.07, 0.1])
-    return [(f"c_in_{c:g}", _base(size, seed=100003, c_in=c)) for c in values]
+                     [0.0, 0.005, 0.01, 0.02, 0.05, 0.1])
+    return [(f"c_in_{c:g}", _phase_base(size, c_in=c)) for c in values]
 
 
 def pvpflux(size):
     pressures = _counts(size, [0.1, 0.4], [0.1, 0.2, 0.3, 0.4, 0.5],
-                        [0.05, 0.1, 0.15, 0.2, 0.25, 0.3, 0.35, 0.4, 0.45, 0.5, 0.6])
-    return [(f"P_{p:g}", _base(size, seed=100003, ka=0.05, P_imposed=p,
+                        [0.1, 0.2, 0.3, 0.35, 0.4, 0.5])
+    return [(f"P_{p:g}", _phase_base(size, ka=0.05, P_imposed=p,
                                thermo_extra="f_pore[3] f_pore[13]")) for p in pressures]
 
 

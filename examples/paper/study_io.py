@@ -18,6 +18,7 @@ import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "pore"))
 from plot_pressure import read_thermo  # noqa: E402  (the main example's log reader)
+import run_cost  # noqa: E402
 
 # A burst file's columns (fix lbm/pore's burst_file). V_dep, L_dep and count_before are taken
 # at the peak; deposit_count, deposit_V and deposit_L are the medians over the burst window
@@ -158,11 +159,16 @@ def load_summary(study_dir):
                 state, _, reason = f.read().partition("\n")
         runs.append(dict(name=os.path.basename(folder), state=state.strip(), reason=reason.strip(),
                          folder=folder, knobs=read_knobs(folder)))
-    core_hours = 0.0
-    if os.path.exists(os.path.join(study_dir, "results.json")):
+    # Each run's cost.txt where every run kept it (run_cost), else what the study's last
+    # analysis recorded.
+    core_hours, exact = run_cost.study_core_hours(r["folder"] for r in runs)
+    if not exact and os.path.exists(os.path.join(study_dir, "results.json")):
         with open(os.path.join(study_dir, "results.json")) as f:
-            core_hours = json.load(f).get("core_hours") or 0.0
+            recorded = json.load(f)
+        core_hours = recorded.get("core_hours") or 0.0
+        exact = recorded.get("core_hours_exact", False)
     return dict(study=m.group(1), size=m.group(2), runs=runs, core_hours=core_hours,
+                core_hours_exact=exact,
                 finished=sum(r["state"] == "done" for r in runs),
                 failed=sum(r["state"] == "failed" for r in runs),
                 incomplete=sum(r["state"] == "incomplete" for r in runs))

@@ -565,5 +565,37 @@ class StudyBinding(unittest.TestCase):
         self.assertEqual(allowed(ensemble.binding_options(2, threads=1)), ours)
 
 
+class StudyCost(unittest.TestCase):
+    """A study's cost is the sum over every launch of every run, including the launches of
+    earlier runners (a study resumed over sittings counted only its last runner's)."""
+
+    def test_every_launch_counts_and_a_killed_one_up_to_its_last_update(self):
+        import time
+        import run_cost
+        with tempfile.TemporaryDirectory() as run:
+            with open(os.path.join(run, run_cost.COST_FILE), "w") as f:
+                f.write("3600.0 2\n")  # an earlier runner's launch: 2 core-hours
+            with run_cost.LaunchClock([run], 1, every=0.05):
+                time.sleep(0.3)
+                hours, exact = run_cost.run_core_hours(run)  # while it runs
+                self.assertTrue(exact)
+                self.assertGreater(hours, 2.0 + 0.1 / 3600)
+            hours, exact = run_cost.run_core_hours(run)
+            self.assertAlmostEqual(hours, 2.0 + 0.3 / 3600, delta=2.0 / 3600)
+            with open(os.path.join(run, run_cost.COST_FILE)) as f:
+                self.assertEqual(len(f.read().splitlines()), 2)
+
+    def test_a_run_without_a_cost_file_counts_its_logged_loops_as_a_lower_bound(self):
+        import run_cost
+        with tempfile.TemporaryDirectory() as run:
+            with open(os.path.join(run, "log.liggghts"), "w") as f:
+                f.write("Loop time of 1800 on 2 procs for 10 steps with 0 atoms\n"
+                        "Loop time of 360.0 on 1 procs for 10 steps with 9 atoms\n")
+            hours, exact = run_cost.run_core_hours(run)
+            self.assertAlmostEqual(hours, 1.1)
+            self.assertFalse(exact)
+            self.assertEqual(run_cost.study_core_hours([run, run]), (2.2, False))
+
+
 if __name__ == "__main__":
     unittest.main()
