@@ -54,6 +54,31 @@ def bootstrap(groups, statistic, resamples=2000, level=0.95, seed=12345):
     return float(value), float(np.percentile(draws, tail)), float(np.percentile(draws, 100 - tail))
 
 
+def stratified_bootstrap(strata, statistic, resamples=2000, level=0.95, seed=12345):
+    """statistic(strata) over a list of strata (each a list of runs' point groups, such as the
+    runs of one pore diameter) and its percentile interval over draws that resample the runs
+    of each stratum with replacement within it, so that every draw keeps every stratum (the
+    seeds of each diameter). `statistic` returns one value or a tuple of values; the result
+    is a list of (value, low, high), one per value. Intervals are nan unless some stratum
+    has two runs."""
+    strata = [[(np.asarray(x, float), np.asarray(y, float)) for x, y in groups] for groups in strata]
+    value = np.atleast_1d(np.asarray(statistic(strata), float))
+    nan = [(float(v), np.nan, np.nan) for v in value]
+    if not any(len(groups) > 1 for groups in strata):
+        return nan
+    rng = np.random.default_rng(seed)
+    draws = np.asarray([np.atleast_1d(statistic([[groups[k] for k in rng.integers(0, len(groups), len(groups))]
+                                                  for groups in strata]))
+                        for _ in range(resamples)], float)
+    tail = 100 * (1 - level) / 2
+    out = []
+    for v, column in zip(value, draws.T):
+        column = column[np.isfinite(column)]
+        out.append((float(v), float(np.percentile(column, tail)), float(np.percentile(column, 100 - tail)))
+                   if len(column) else (float(v), np.nan, np.nan))
+    return out
+
+
 def fmt(value, low, high):
     """'1.15 [1.10, 1.20]' (95 % bootstrap interval), or 'n/a'."""
     if not np.isfinite(value):

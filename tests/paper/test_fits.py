@@ -597,5 +597,37 @@ class StudyCost(unittest.TestCase):
             self.assertEqual(run_cost.study_core_hours([run, run]), (2.2, False))
 
 
+class DiameterLaw(unittest.TestCase):
+    """porediameter by the paper's procedure: a slope of P - P_0 on L_dep per pore diameter,
+    then the slopes against D, with intervals over seeds."""
+
+    def test_the_slopes_against_D_give_K_and_the_exponent(self):
+        from figures import porediameter
+        rng = random.Random(5)
+        K, a = 0.9, 1.0
+        with tempfile.TemporaryDirectory() as tmp:
+            runs = []
+            for D in (2.11, 2.82, 3.52, 4.23):
+                for seed in range(3):
+                    k_run = K * (1 + 0.05 * (seed - 1))  # the seeds differ by +-5 %
+                    lengths = [rng.uniform(0.5, 4.0) for _ in range(6)]
+                    rows = [(0.0, L, 0.01 + k_run * L / D ** a) for L in lengths]
+                    runs.append(write_run(os.path.join(tmp, f"D_{D}_seed_{seed}"), 0.01, rows, D=D,
+                                          deposits=[(10, 0.0, L) for L in lengths]))
+            # the synthetic logs have no deposit rows: the records' own deposit measures them
+            law = porediameter.diameter_law(dict(runs=runs, finished=len(runs)), deposit="median")
+            self.assertEqual(law["D"], [2.11, 2.82, 3.52, 4.23])
+            self.assertEqual(law["runs_per_D"], [3, 3, 3, 3])
+            for D, (s, low, high) in zip(law["D"], law["slope_per_D"]):
+                self.assertTrue(low <= K / D <= high)
+                self.assertLess(high - low, 0.15 * K / D)
+            k, k_low, k_high = law["K"]
+            exponent, a_low, a_high = law["a"]
+            self.assertAlmostEqual(exponent, a, delta=0.05)
+            self.assertAlmostEqual(k, K, delta=0.05)
+            self.assertTrue(k_low < K < k_high and a_low < a < a_high)
+            self.assertLess(a_high - a_low, 0.3)
+
+
 if __name__ == "__main__":
     unittest.main()

@@ -102,6 +102,22 @@ def resampled(groups):
 DEPOSIT_MEASURES = ("largest", "median", "peak")
 
 
+def run_points(run, x_of, deposit="largest"):
+    """One run's bursts as (x, P_peak, P_peak - P_0) lists, x = x_of(run, burst) with the
+    burst's deposit counted by `deposit` (pressure_fits); the last list is empty when the run
+    has no clean pressure P_0 (clean_pressure)."""
+    if deposit not in DEPOSIT_MEASURES:
+        raise ValueError(f"deposit must be one of {', '.join(DEPOSIT_MEASURES)}, not {deposit!r}")
+    rows = bursts(run["folder"])
+    if deposit == "largest":
+        rows = with_largest_deposits(run, rows)
+    elif deposit == "peak":
+        rows = at_the_peak(rows)
+    p0 = clean_pressure(run)
+    x = [x_of(run, b) for b in rows]
+    return x, [b["P_peak"] for b in rows], [b["P_peak"] - p0 for b in rows] if np.isfinite(p0) else []
+
+
 def pressure_fits(summary, x_of, deposit="largest"):
     """The fits of the peak pressure against x_of(run, burst), the same three for every
     figure so that like is compared with like: the paper's line through the origin on P, the
@@ -113,19 +129,11 @@ def pressure_fits(summary, x_of, deposit="largest"):
     records' deposit (the median over the burst window); or "peak", the record's count at the
     peak (at_the_peak)."""
     from fit_stats import bootstrap, intercept, pearson, slope, slope_through_origin
-    if deposit not in DEPOSIT_MEASURES:
-        raise ValueError(f"deposit must be one of {', '.join(DEPOSIT_MEASURES)}, not {deposit!r}")
     groups, excess = [], []
     for run in finished_runs(summary):
-        rows = bursts(run["folder"])
-        if deposit == "largest":
-            rows = with_largest_deposits(run, rows)
-        elif deposit == "peak":
-            rows = at_the_peak(rows)
-        p0 = clean_pressure(run)
-        x = [x_of(run, b) for b in rows]
-        groups.append((x, [b["P_peak"] for b in rows]))
-        excess.append((x, [b["P_peak"] - p0 for b in rows] if np.isfinite(p0) else []))
+        x, p, p_excess = run_points(run, x_of, deposit)
+        groups.append((x, p))
+        excess.append((x, p_excess))
     excess = [(x, y) for x, y in excess if len(y)]
     samples, unit = resampled(groups)
     excess_samples, _ = resampled(excess)

@@ -7,10 +7,10 @@ the peak, per area of pore wall the deposit covers (pi D L_dep), in P_out. The w
 particles that are not in the deposit, so this f_a is an upper estimate."""
 import numpy as np
 
-from fit_stats import bootstrap, fmt
+from fit_stats import bootstrap, fmt, slope_through_origin, stratified_bootstrap
 from figures.common import (beside_fits, beside_results, beside_text, bursts, draw_beside, draw_fits,
-                            finished_runs, fits_text, p_out, plt, pressure_fits, resampled, result, save, thermo,
-                            with_largest_deposits)
+                            finished_runs, fits_text, p_out, plt, pressure_fits, resampled, result, run_points,
+                            save, thermo, with_largest_deposits)
 
 PAPER_K = 0.91
 
@@ -35,6 +35,67 @@ def _points(run):
     return out
 
 
+def _law(diameters):
+    """statistic for fit_stats.stratified_bootstrap: from strata of (L_dep, P - P_0) groups,
+    one stratum per diameter, (K, a) of s_D = K D^-a, s_D the slope through the origin of
+    each diameter's points, fitted as a line of log s_D on log D (diameters whose slope is
+    not positive left out; nan with fewer than two)."""
+    def statistic(groups_by_D):
+        D, s = [], []
+        for d, groups in zip(diameters, groups_by_D):
+            x = np.concatenate([g[0] for g in groups]) if groups else np.zeros(0)
+            y = np.concatenate([g[1] for g in groups]) if groups else np.zeros(0)
+            slope = slope_through_origin(x, y)
+            if np.isfinite(slope) and slope > 0:
+                D.append(d)
+                s.append(slope)
+        if len(D) < 2:
+            return np.nan, np.nan
+        minus_a, log_K = np.polyfit(np.log(D), np.log(s), 1)
+        return float(np.exp(log_K)), float(-minus_a)
+    return statistic
+
+
+def diameter_law(summary, deposit="largest"):
+    """The paper's procedure for P = K L_dep / D^a: per pore diameter D the slope s_D of
+    P - P_0 against L_dep through the origin over that D's runs, then s_D against D in
+    log-log (_law). Intervals over seeds: a bootstrap that resamples each diameter's runs
+    within it (fit_stats.stratified_bootstrap), not over bursts. Returns the diameters, the
+    slopes with their intervals, K and a."""
+    by_D = {}
+    for run in finished_runs(summary):
+        x, _, excess = run_points(run, lambda r, b: b["deposit_L"], deposit)
+        if len(excess):
+            by_D.setdefault(float(run["knobs"]["D"]), []).append((x, excess))
+    diameters = sorted(by_D)
+    strata = [by_D[d] for d in diameters]
+    slopes = [bootstrap(groups, slope_through_origin) for groups in strata]  # over its runs
+    K, a = stratified_bootstrap(strata, _law(diameters)) if len(diameters) > 1 else \
+        ((np.nan,) * 3, (np.nan,) * 3)
+    return dict(D=diameters, slope_per_D=slopes, runs_per_D=[len(g) for g in strata], K=K, a=a)
+
+
+def _draw_law(ax, law):
+    """The slopes per diameter against D in log-log, the fitted K D^-a and the paper's K / D."""
+    if not law["D"]:
+        return
+    D = np.asarray(law["D"])
+    s = np.asarray([v[0] for v in law["slope_per_D"]])
+    err = np.asarray([[v[0] - v[1], v[2] - v[0]] for v in law["slope_per_D"]]).T
+    ax.errorbar(D, s, yerr=np.where(np.isfinite(err), err, 0), fmt="o", capsize=3,
+                label="slope of P - P_0 on L_dep per D (interval over seeds)")
+    xs = np.linspace(0.9 * D.min(), 1.1 * D.max(), 20)
+    ax.plot(xs, PAPER_K / xs, "k--", label=f"paper: {PAPER_K} / D")
+    if np.isfinite(law["K"][0]):
+        ax.plot(xs, law["K"][0] * xs ** -law["a"][0], "C1-",
+                label=f"ours: K {fmt(*law['K'])}, a {fmt(*law['a'])}")
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("D [d]")
+    ax.set_ylabel("slope of P on L_dep [P_out / d]")
+    ax.legend(fontsize=7)
+
+
 def analyze(summary, out_dir):
     runs = finished_runs(summary)
     points = [_points(run) for run in runs]
@@ -44,7 +105,8 @@ def analyze(summary, out_dir):
     K = fits["through_origin"]
     f_a_groups = [([p[2] for p in ps if np.isfinite(p[2])],) * 2 for ps in points]
     f_a = bootstrap(resampled(f_a_groups)[0], lambda x, y: float(np.mean(x)) if len(x) else np.nan)
-    fig, ax = plt.subplots(figsize=(6, 4.5))
+    law = diameter_law(summary)
+    fig, (ax, ax_law) = plt.subplots(1, 2, figsize=(11, 4.5))
     for D in sorted({float(run["knobs"]["D"]) for run in runs}):
         x = [p[0] for run, ps in zip(runs, points) if float(run["knobs"]["D"]) == D for p in ps]
         y = [p[1] for run, ps in zip(runs, points) if float(run["knobs"]["D"]) == D for p in ps]
@@ -58,10 +120,13 @@ def analyze(summary, out_dir):
     ax.set_xlabel("L_dep / D")
     ax.set_ylabel("P_peak [P_out]")
     ax.legend(fontsize=7, ncol=2)
+    _draw_law(ax_law, law)
     return result(summary, "porediameter", "K in P = K L_dep / D; theory 4 f_a",
                   f"{PAPER_K} +- 0.04; f_a = K/4 = {PAPER_K / 4:.3g}",
-                  f"K {fits_text(fits)}; f_a = {fmt(*f_a)}; K {beside_text(beside)}",
+                  f"K {fits_text(fits)}; by the paper's procedure (a slope per D, then the slopes "
+                  f"against D; intervals over seeds): P - P_0 = K L_dep / D^a with K {fmt(*law['K'])}, "
+                  f"a {fmt(*law['a'])}; f_a = {fmt(*f_a)}; K {beside_text(beside)}",
                   save(fig, out_dir, "porediameter"),
                   K=K, K_excess=fits["excess_through_origin"], slope=fits["slope"],
-                  intercept=fits["intercept"], f_a=f_a,
+                  intercept=fits["intercept"], f_a=f_a, diameter_law=law,
                   **beside_results(beside))
