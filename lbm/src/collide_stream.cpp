@@ -123,7 +123,7 @@ void collide_stream_run(const Real* const* src, Real* const* dst,
                         const std::uint8_t* __restrict type, const Run& run,
                         const std::ptrdiff_t* off, double omega_plus,
                         double omega_minus, double fx, double fy, double fz, double rho0,
-                        double* const* moments, const ChunkPrologue* prologue) {
+                        double* const* moments) {
   constexpr bool streaming = kChunk == kChunkStreaming;
   using Out = std::conditional_t<streaming, double, Real>;
   const double source_even = 1.0 - 0.5 * omega_plus;
@@ -136,7 +136,6 @@ void collide_stream_run(const Real* const* src, Real* const* dst,
   for (int start = 0; start < run.length; start += kChunk) {
     const int m = run.length - start < kChunk ? run.length - start : kChunk;
     const std::size_t first = run.first + start;
-    if (prologue) prologue->before(first, first + std::size_t(m));
     const Real* pull[L::Q];
     // Plain stores go straight into the field (in place or not, a node's outputs are slots
     // no other node of the chunk reads); streaming stores into the buffer, whose lines
@@ -275,7 +274,7 @@ bool output_exceeds_cache(std::size_t cells) {
 
 using RunKernel = void (*)(const Real* const*, Real* const*, const std::uint8_t*, const Run&,
                           const std::ptrdiff_t*, double, double, double, double, double, double,
-                          double* const*, const ChunkPrologue*);
+                          double* const*);
 
 template <int kChunk, bool kMoments>
 RunKernel run_kernel(bool incompressible, bool forced) {
@@ -319,7 +318,7 @@ void collide_stream(const CollideStreamArgs& a) {
         const KernelSpan& span = a.spans[i];
         const Run r{span.first, span.length, g.padded(0), nx, g.coords(span.first)[0]};
         run(a.src.data(), a.dst.data(), a.node_type, r, off, a.omega_plus, a.omega_minus,
-            a.force[0], a.force[1], a.force[2], a.rho0, a.moments.data(), a.prologue);
+            a.force[0], a.force[1], a.force[2], a.rho0, a.moments.data());
       }
       detail::streaming_store_fence();
     }
@@ -342,7 +341,7 @@ void collide_stream(const CollideStreamArgs& a) {
         if (j0 == j1) continue;
         const Run r{g.cell(0, j0, k), (j1 - j0 - 1) * g.padded(0) + nx, g.padded(0), nx, 0};
         run(a.src.data(), a.dst.data(), a.node_type, r, off, a.omega_plus, a.omega_minus,
-            a.force[0], a.force[1], a.force[2], a.rho0, a.moments.data(), a.prologue);
+            a.force[0], a.force[1], a.force[2], a.rho0, a.moments.data());
       }
     // Before the region's closing barrier: every thread's runs are in memory after it.
     detail::streaming_store_fence();

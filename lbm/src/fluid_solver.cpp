@@ -289,7 +289,7 @@ double FluidSolver::open_face_density(std::size_t cell) const {
   return parameters_.rho0;
 }
 
-void FluidSolver::collide_stream(const ChunkPrologue* prologue) {
+void FluidSolver::collide_stream() {
   // In place (PopulationField: the AA pattern): read under the field's placement, written
   // under the other one, into the same slots.
   const PopulationField::Placement next = other(f_.placement());
@@ -307,7 +307,6 @@ void FluidSolver::collide_stream(const ChunkPrologue* prologue) {
   args.force = parameters_.body_force;
   args.incompressible = parameters_.incompressible;
   args.rho0 = parameters_.rho0;
-  args.prologue = prologue;
   if (keep_node_moments_)
     for (int m = 0; m < 4; ++m) args.moments[std::size_t(m)] = node_moments_[std::size_t(m)].data();
   lbm::collide_stream(args);

@@ -1,7 +1,6 @@
 #include "coupling/sphere_coupling.h"
 
 #include <cmath>
-#include <stdexcept>
 
 #include "coupling/force/open_face_pressure.h"
 #include "coupling/stage_clock.h"
@@ -92,11 +91,6 @@ void SphereCoupling::set_particle_reach(double view_reach, double radius_bound) 
 }
 
 void SphereCoupling::apply_moving_walls_and_force(const ParticleView& view) {
-  moving_walls_and_force(view, nullptr);
-}
-
-void SphereCoupling::moving_walls_and_force(const ParticleView& view,
-                                            lbm::moving_wall::DeferredLinkMass* deferred) {
   const double rho0 = solver_.parameters().rho0;
   const bool conserve = options_.conserve_link_mass;
   // Received by this step's exchange_halo, or none (a host that exchanged by itself).
@@ -118,7 +112,7 @@ void SphereCoupling::moving_walls_and_force(const ParticleView& view,
       // the force is the scheme's own.
       link_defect_ = lbm::moving_wall::apply_links_and_restore_mass(
           links_.links, options_.wall_scheme, solver_, moment_cache_, link_sweep_,
-          link_populations_, defect_per_link_, ghosts, field, deferred);
+          link_populations_, defect_per_link_, ghosts, field);
     } else {
       lbm::apply_links(links_.links, options_.wall_scheme, solver_, &moment_cache_, nullptr,
                        &link_populations_, ghosts);
@@ -148,18 +142,13 @@ void SphereCoupling::step(const ParticleView& view) {
     StageTimer t(times_.static_walls);
     solver_.apply_wall_bounce_back();
   }
-  // The link mass correction of the nodes off the open faces waits for the kernel, which
-  // pulls the slots it writes right after it (lbm::moving_wall::DeferredLinkMass).
-  const bool defer = options_.conserve_link_mass;
-  moving_walls_and_force(view, defer ? &deferred_mass_ : nullptr);
+  apply_moving_walls_and_force(view);
   {
     StageTimer t(times_.open_boundaries);
     solver_.apply_open_boundaries();
   }
   StageTimer t(times_.collide_stream);
-  solver_.collide_stream(defer ? &deferred_mass_ : nullptr);
-  if (defer && !deferred_mass_.complete())
-    throw std::logic_error("SphereCoupling: the collide-stream kernel skipped nodes whose link mass it was to correct");
+  solver_.collide_stream();
 }
 
 void SphereCoupling::add_loads(std::size_t count, double* force, double* torque) const {

@@ -17,22 +17,6 @@ struct KernelSpan {
   int length = 0;
 };
 
-// Work a host does on the cells of each chunk of the kernel just before it pulls their
-// populations: a correction of the slots they pull (the moving walls' link mass correction,
-// lbm/moving_wall/link_sweep.h's DeferredLinkMass), done there because the kernel brings
-// those slots into the cache right after, so they cross memory once a step, not twice.
-// before(first, last) is called for every chunk [first, last) of the cells the kernel
-// computes (with the x padding between owned rows), in order within a run, on the thread
-// that computes it; it may write only slots that the cells of [first, last) pull (each slot
-// is pulled by one cell), so no two threads touch the same slot.
-class ChunkPrologue {
- public:
-  virtual void before(std::size_t first, std::size_t last) const = 0;
-
- protected:
-  ~ChunkPrologue() = default;
-};
-
 // Everything the fused stream-collide kernel reads, resolved before the loop (no options
 // are looked up per cell). src holds post-collision populations f*(t) with the boundary
 // slots already filled, population q of cell c at src[q][c]; dst receives f*(t+1) the same
@@ -66,8 +50,6 @@ struct CollideStreamArgs {
   // the next step read four values per node instead of gathering 19 populations from 19
   // arrays. Non-fluid nodes get rho = 1 and u = -F/2.
   std::array<double*, 4> moments{};
-  // Where non-null, called before each chunk (ChunkPrologue).
-  const ChunkPrologue* prologue = nullptr;
 };
 
 // Pull stream + TRT collision (Guo forcing split into its even and odd parts) on every

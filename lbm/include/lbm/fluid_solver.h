@@ -101,9 +101,7 @@ class FluidSolver {
   // The density the open boundary gives the face's fluid node `cell` this step
   // (lbm::open_face_node_density); rho0 where `cell` is no fluid node of an open face here.
   double open_face_density(std::size_t cell) const;
-  // With `prologue`, its work is done on each chunk of cells right before the kernel pulls
-  // their populations (ChunkPrologue, collide_stream.h).
-  void collide_stream(const ChunkPrologue* prologue = nullptr);
+  void collide_stream();
 
   // Reset every fluid node to equilibrium at density rho and velocity u.
   void initialise_equilibrium(double rho, const std::array<double, 3>& u);

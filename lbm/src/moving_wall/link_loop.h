@@ -121,18 +121,15 @@ std::size_t apply_node(const LinkSweep& order, std::size_t i, std::size_t end,
 }
 
 // The correction of block c's nodes, node by node: each node's 19 slots written once, with
-// the defects of its links taken off in link order (LinkMassRestorer::remove_node). With
-// `open_face_nodes_only`, only the nodes next to an open face: the others' corrections wait
-// for the fluid's sweep (DeferredLinkMass).
+// the defects of its links taken off in link order (LinkMassRestorer::remove_node).
 inline void correct_block(const LinkSweep& order, std::size_t c, const LinkMassRestorer& restorer,
-                          const double* defect, bool open_face_nodes_only) {
+                          const double* defect) {
   const BoundaryLink* const link = order.sorted_links();
   for (std::size_t i = order.first(c), end = order.first(c + 1); i != end;) {
     const std::size_t x = link[i].fluid_cell;
     std::size_t node_end = i + 1;
     while (node_end != end && link[node_end].fluid_cell == x) ++node_end;
-    if (!open_face_nodes_only || restorer.next_to_open(x))
-      restorer.remove_node(x, defect, order.ids() + i, order.ids() + node_end);
+    restorer.remove_node(x, defect, order.ids() + i, order.ids() + node_end);
     i = node_end;
   }
 }
@@ -145,7 +142,7 @@ template <class Scheme>
 void sweep_blocks(const LinkSweep& order, const Scheme& scheme, const DirectionOffsets& offsets,
                   const LinkSlots& slots, double rho0, const LinkMassRestorer& restorer,
                   PopulationField& f, LinkPopulations* pops, double* defect, std::size_t first,
-                  std::size_t last, std::size_t safe_first, std::size_t safe_last, bool open_face_nodes_only) {
+                  std::size_t last, std::size_t safe_first, std::size_t safe_last) {
   const std::size_t lag = order.lag();
   for (std::size_t b = first; b < last + lag; ++b) {
     if (b < last)
@@ -153,7 +150,7 @@ void sweep_blocks(const LinkSweep& order, const Scheme& scheme, const DirectionO
         i = apply_node(order, i, end, scheme, offsets, slots, rho0, f, pops, defect);
     if (b < first + lag) continue;
     const std::size_t c = b - lag;
-    if (c >= safe_first && c < safe_last) correct_block(order, c, restorer, defect, open_face_nodes_only);
+    if (c >= safe_first && c < safe_last) correct_block(order, c, restorer, defect);
   }
 }
 
@@ -163,13 +160,12 @@ void sweep_blocks(const LinkSweep& order, const Scheme& scheme, const DirectionO
 // their cells, nor do the thread's own links after them (as on one thread). The blocks within
 // `lag` of a range's inner ends are corrected after a barrier, once every link has been read.
 // A correction writes only the slots its node pulls, so the order of blocks does not change
-// a bit: the result is the one-thread sweep's for any number of threads. With
-// `open_face_nodes_only` only the nodes next to an open face are corrected (DeferredLinkMass).
+// a bit: the result is the one-thread sweep's for any number of threads.
 template <class Scheme>
 void sweep(const std::vector<BoundaryLink>& links, const LinkSweep& order, const Scheme& scheme,
            const BlockLayout& layout, double rho0, const LinkMassRestorer& restorer,
            PopulationField& f, std::vector<LinkPopulations>& populations,
-           std::vector<double>& per_link, int threads, bool open_face_nodes_only) {
+           std::vector<double>& per_link, int threads) {
   populations.resize(links.size());
   per_link.resize(links.size());
   const DirectionOffsets offsets(layout);
@@ -180,8 +176,7 @@ void sweep(const std::vector<BoundaryLink>& links, const LinkSweep& order, const
   double* const defect = per_link.data();
   const std::size_t blocks = order.num_blocks(), lag = order.lag();
   if (threads <= 1) {
-    sweep_blocks(order, scheme, offsets, slots, rho0, restorer, f, pops, defect, 0, blocks, 0, blocks,
-                 open_face_nodes_only);
+    sweep_blocks(order, scheme, offsets, slots, rho0, restorer, f, pops, defect, 0, blocks, 0, blocks);
     return;
   }
 #pragma omp parallel num_threads(threads)
@@ -192,10 +187,10 @@ void sweep(const std::vector<BoundaryLink>& links, const LinkSweep& order, const
     const std::size_t safe_first = t == 0 ? first : first + lag;
     const std::size_t safe_last = t + 1 == nt ? last : (last > lag ? last - lag : 0);
     sweep_blocks(order, for_thread(scheme, t), offsets, slots, rho0, restorer, f, pops, defect,
-                 first, last, safe_first, safe_last, open_face_nodes_only);
+                 first, last, safe_first, safe_last);
 #pragma omp barrier
     for (std::size_t c = first; c < last; ++c)
-      if (c < safe_first || c >= safe_last) correct_block(order, c, restorer, defect, open_face_nodes_only);
+      if (c < safe_first || c >= safe_last) correct_block(order, c, restorer, defect);
   }
 }
 
@@ -228,6 +223,6 @@ void apply(const std::vector<BoundaryLink>& links, const Scheme& scheme, const B
   template void sweep<Scheme>(const std::vector<BoundaryLink>&, const LinkSweep&, const Scheme&, \
                               const BlockLayout&, double, const LinkMassRestorer&,               \
                               PopulationField&, std::vector<LinkPopulations>&,                   \
-                              std::vector<double>&, int, bool)
+                              std::vector<double>&, int)
 
 }  // namespace lbm::moving_wall

@@ -32,11 +32,7 @@ void LinkSweep::sort(const std::vector<BoundaryLink>& links, const BlockLayout& 
   ids_.resize(n);
   for (const std::uint32_t l : by_cell_in_block_) ids_[next_[cell_[l] >> kBlockShift]++] = l;
   sorted_.resize(n);
-  nodes_ = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    sorted_[i] = links[ids_[i]];
-    nodes_ += i == 0 || sorted_[i].fluid_cell != sorted_[i - 1].fluid_cell;
-  }
+  for (std::size_t i = 0; i < n; ++i) sorted_[i] = links[ids_[i]];
   // Cells one link apart (the scheme's reads x - c_q, the correction's writes x - c_p) are
   // at most `reach` indices apart, so at most reach / block + 1 blocks.
   std::ptrdiff_t reach = 0;
@@ -56,59 +52,26 @@ std::size_t LinkSweep::block_of_share(int t, int shares) const {
                      begin_.begin());
 }
 
-void DeferredLinkMass::arm(const LinkSweep& order, const LinkMassRestorer& restorer,
-                           const double* defect) {
-  order_ = &order;
-  restorer_.emplace(restorer);
-  defect_ = defect;
-  expected_ = order.num_nodes();
-  visited_.store(0, std::memory_order_relaxed);
-}
-
-void DeferredLinkMass::before(std::size_t first, std::size_t last) const {
-  if (!order_ || order_->num_links() == 0) return;
-  const BoundaryLink* const link = order_->sorted_links();
-  const std::size_t n = order_->num_links();
-  // The links are in cell order: start at first's block, skip the cells before first.
-  const std::size_t block = first >> LinkSweep::kBlockShift;
-  if (block >= order_->num_blocks()) return;
-  std::size_t i = order_->first(block);
-  while (i != n && link[i].fluid_cell < first) ++i;
-  std::size_t nodes = 0;
-  while (i != n && link[i].fluid_cell < last) {
-    const std::size_t x = link[i].fluid_cell;
-    std::size_t node_end = i + 1;
-    while (node_end != n && link[node_end].fluid_cell == x) ++node_end;
-    if (!restorer_->next_to_open(x))  // the face nodes were corrected in the moving walls' sweep
-      restorer_->remove_node(x, defect_, order_->ids() + i, order_->ids() + node_end);
-    ++nodes;
-    i = node_end;
-  }
-  if (nodes) visited_.fetch_add(nodes, std::memory_order_relaxed);
-}
-
 LinkMassDefect apply_links_and_restore_mass(const std::vector<BoundaryLink>& links,
                                             MovingWallScheme scheme, FluidSolver& solver,
                                             MomentCache& cache, LinkSweep& order,
                                             std::vector<LinkPopulations>& populations,
                                             std::vector<double>& per_link,
                                             const GhostMoments* ghosts,
-                                            const std::array<std::vector<double>, 4>* field,
-                                            DeferredLinkMass* deferred) {
+                                            const std::array<std::vector<double>, 4>* field) {
   const double rho0 = solver.parameters().rho0;
   const BlockLayout& layout = solver.layout();
   PopulationField& f = solver.populations();
   const int threads = link_threads(links.size());
   order.sort(links, layout);
   const LinkMassRestorer restorer(layout, solver.node_types(), f);
-  const bool defer = deferred != nullptr;
   switch (scheme) {
     case MovingWallScheme::kBounceBack:
-      sweep(links, order, BounceBack{rho0}, layout, rho0, restorer, f, populations, per_link, threads, defer);
+      sweep(links, order, BounceBack{rho0}, layout, rho0, restorer, f, populations, per_link, threads);
       break;
     case MovingWallScheme::kBouzidi:
       sweep(links, order, Bouzidi{rho0, &solver.node_types()}, layout, rho0, restorer, f,
-            populations, per_link, threads, defer);
+            populations, per_link, threads);
       break;
     case MovingWallScheme::kMeiLuoShyy: {
       if (!field) {
@@ -117,11 +80,10 @@ LinkMassDefect apply_links_and_restore_mass(const std::vector<BoundaryLink>& lin
       }
       const MeiLuoShyy mls{rho0, 1.0 / solver.trt().omega_plus, solver.parameters().body_force,
                            &solver.node_types(), &cache, 0, field};
-      sweep(links, order, mls, layout, rho0, restorer, f, populations, per_link, threads, defer);
+      sweep(links, order, mls, layout, rho0, restorer, f, populations, per_link, threads);
       break;
     }
   }
-  if (deferred) deferred->arm(order, restorer, per_link.data());
   LinkMassDefect total;
   for (const double d : per_link) total.add(d);
   return total;

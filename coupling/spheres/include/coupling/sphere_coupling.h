@@ -76,9 +76,6 @@ class SphereCoupling {
   // result: lbm::moving_wall::exchange_ghost_moments), which the next
   // apply_moving_walls_and_force reads.
   void exchange_halo();
-  // The moving walls with their whole link mass correction, then the momentum exchange.
-  // step() does the correction of the nodes off the open faces in its collide-stream
-  // instead (lbm::moving_wall::DeferredLinkMass): the same result, one pass less over them.
   void apply_moving_walls_and_force(const ParticleView& view);
   // How far (cells) beyond this rank's owned box the views passed to step() hold every
   // particle, and a bound of every particle's radius (cells). When the first is at least
@@ -115,10 +112,6 @@ class SphereCoupling {
   const lbm::FluidSolver& solver() const { return solver_; }
 
  private:
-  // apply_moving_walls_and_force, with the correction of the nodes off the open faces left to
-  // `deferred` where non-null.
-  void moving_walls_and_force(const ParticleView& view, lbm::moving_wall::DeferredLinkMass* deferred);
-
   lbm::FluidSolver& solver_;
   SphereCouplingOptions options_;
   SphereMapping mapping_;
@@ -127,7 +120,6 @@ class SphereCoupling {
   std::vector<SphereLinks> link_scratch_;    // per-thread links, reused every step
   lbm::moving_wall::MomentCache moment_cache_;  // reused every step
   lbm::moving_wall::LinkSweep link_sweep_;      // reused every step
-  lbm::moving_wall::DeferredLinkMass deferred_mass_;  // step()'s, from its moving walls to its kernel
   HydrodynamicLoads loads_;
   MassChange mass_;
   lbm::moving_wall::LinkMassDefect link_defect_;

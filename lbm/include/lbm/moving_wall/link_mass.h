@@ -74,9 +74,6 @@ class LinkMassRestorer {
   // with each of the 19 slots read and written once (the same roundings).
   void remove_node(std::size_t fluid_cell, const double* defect, const std::uint32_t* first,
                    const std::uint32_t* last) const;
-  // Whether a source of x (x - c_p) is an open face's ghost, so that x is a face node, whose
-  // slots the open boundary reads and writes.
-  bool next_to_open(std::size_t fluid_cell) const;
 
  private:
   // Slot f_p(x - c_p) is slot_[p][x], the node it belongs to x + from_[p].
@@ -87,6 +84,7 @@ class LinkMassRestorer {
   std::ptrdiff_t edge_[4];  // +- e_2 +- e_3
   const std::uint8_t* type_;
 
+  bool next_to_open(std::size_t fluid_cell) const;
   void remove_next_to_open(std::size_t fluid_cell, double defect) const;
 };
 

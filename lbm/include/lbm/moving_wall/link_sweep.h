@@ -14,13 +14,10 @@
 // read is read before any correction writes it; the correction writes the slots of each node
 // in its links' order (the blocks keep link order within them, and a node's slots are pulled
 // by that node alone); the defect sum runs in link order.
-#include <atomic>
 #include <cstdint>
-#include <optional>
 #include <vector>
 
 #include "lbm/block_layout.h"
-#include "lbm/collide_stream.h"
 #include "lbm/moving_wall/link_boundary.h"
 #include "lbm/moving_wall/link_mass.h"
 #include "lbm/moving_wall/moment_cache.h"
@@ -41,9 +38,6 @@ class LinkSweep {
 
   void sort(const std::vector<BoundaryLink>& links, const BlockLayout& layout);
   std::size_t num_blocks() const { return begin_.empty() ? 0 : begin_.size() - 1; }
-  std::size_t num_links() const { return sorted_.size(); }
-  // The fluid nodes with at least one link.
-  std::size_t num_nodes() const { return nodes_; }
   std::size_t lag() const { return lag_; }
   // Block b's links are the sorted positions [first(b), first(b + 1)): position i holds link
   // id(i), a copy of which is link(i) (the sweep reads the links in its own order, from
@@ -62,34 +56,6 @@ class LinkSweep {
   std::vector<std::uint32_t> begin_, next_, ids_, by_cell_in_block_, cell_;
   std::vector<BoundaryLink> sorted_;
   std::size_t lag_ = 0;
-  std::size_t nodes_ = 0;
-};
-
-// The link mass correction of the nodes that no open face reads, done in the fluid's sweep
-// (a ChunkPrologue of the collide-stream kernel) instead of in the moving walls' sweep: the
-// kernel pulls the very slots the correction writes right after it, so the boundary nodes'
-// populations come into the cache once a step instead of twice. The same writes, each slot
-// corrected by its node's links in link order (LinkMassRestorer::remove_node), so the result
-// is the same bit for bit: between the moving walls and the kernel only the open faces touch
-// the populations, and they read and write only the slots of the face nodes, whose
-// corrections stay in the moving walls' sweep.
-//
-// Filled by apply_links_and_restore_mass; valid until the populations, the links or the
-// sort change, so the caller passes it to the very next FluidSolver::collide_stream.
-class DeferredLinkMass final : public ChunkPrologue {
- public:
-  void before(std::size_t first, std::size_t last) const override;
-  // Whether the last kernel visited every node with links (each chunk's prologue counts the
-  // nodes it found): false means corrections were lost.
-  bool complete() const { return visited_.load(std::memory_order_relaxed) == expected_; }
-  void arm(const LinkSweep& order, const LinkMassRestorer& restorer, const double* defect);
-
- private:
-  const LinkSweep* order_ = nullptr;
-  std::optional<LinkMassRestorer> restorer_;
-  const double* defect_ = nullptr;
-  std::size_t expected_ = 0;
-  mutable std::atomic<std::size_t> visited_{0};
 };
 
 // The loop of the sweep for one scheme (link_loop.h): fills `populations` (as apply_links)
@@ -98,23 +64,20 @@ template <class Scheme>
 void sweep(const std::vector<BoundaryLink>& links, const LinkSweep& order, const Scheme& scheme,
            const BlockLayout& layout, double rho0, const LinkMassRestorer& restorer,
            PopulationField& f, std::vector<LinkPopulations>& populations,
-           std::vector<double>& per_link, int threads, bool open_face_nodes_only);
+           std::vector<double>& per_link, int threads);
 
 // apply_links(links, scheme, solver, cache, nullptr, populations), then the link mass defect
 // (returned, and per link in `per_link`) and restore_link_mass, as one sweep, split over the
 // OpenMP threads by ranges of blocks (sweep in link_loop.h). The same result for any number
 // of threads. Mei-Luo-Shyy reads the moments of the nodes from `field` where non-null (the
 // solver's node_moment_field, whose ghosts every link may read hold their owners' moments),
-// else from `cache`, with `ghosts` (as for apply_links) preset in it. With `deferred`, only
-// the nodes next to an open face are corrected here and `deferred` is armed with the others,
-// which the next collide_stream(&deferred) corrects (DeferredLinkMass).
+// else from `cache`, with `ghosts` (as for apply_links) preset in it.
 LinkMassDefect apply_links_and_restore_mass(const std::vector<BoundaryLink>& links,
                                             MovingWallScheme scheme, FluidSolver& solver,
                                             MomentCache& cache, LinkSweep& order,
                                             std::vector<LinkPopulations>& populations,
                                             std::vector<double>& per_link,
                                             const GhostMoments* ghosts = nullptr,
-                                            const std::array<std::vector<double>, 4>* field = nullptr,
-                                            DeferredLinkMass* deferred = nullptr);
+                                            const std::array<std::vector<double>, 4>* field = nullptr);
 
 }  // namespace lbm::moving_wall
