@@ -3,7 +3,7 @@
 name (figures/<study>.py), writes <study>/results.json and the plot, prints the row of
 doc/paper.md (paper's value, ours with its 95 % bootstrap interval over runs, run cost).
 
-Usage: analyze.py <study folder> [--figure NAME] [--as-it-stands] [--out DIR]
+Usage: analyze.py <study folder> [--figure NAME] [--as-it-stands] [--out DIR] [--with FOLDER ...]
 (run_study.py calls it after the runs)
 
 --figure analyses the folder's runs as another figure: e.g. the single-burst figure from the
@@ -11,6 +11,9 @@ largest burst among a seed ensemble, `analyze.py studies/dropvol --figure single
 (results in <folder>/<NAME>/).
 --as-it-stands also takes the runs cut short or still under way, with the rows and bursts they
 have so far (a paper-length run built up over several sittings); the results name them.
+--with FOLDER takes the finished runs of another study folder (or its compacted evidence)
+beside the study's own, as if they were its runs: dropvol's new seeds with the calibration's
+paper-length run, `analyze.py studies/dropvol --with doc/calibration/paper_run`.
 --out writes the results and the plot into DIR instead (the study folder is left as it is: a
 study's compacted evidence, compact_study.py, can be analysed again beside it).
 """
@@ -52,8 +55,21 @@ def take_runs_as_they_stand(summary, study_dir):
     return [r["name"] for r in partial]
 
 
-def analyze(study_dir, figure=None, as_it_stands=False, out=None):
+def add_runs_of(summary, folder):
+    """The runs of another study folder (or compacted evidence) appended to `summary`, with
+    their cost; the run names keep the folder's name in front, so that none collides."""
+    other = load_summary(folder)
+    prefix = os.path.basename(os.path.normpath(folder)) + "/"
+    summary["runs"] = summary["runs"] + [dict(r, name=prefix + r["name"]) for r in other["runs"]]
+    summary["core_hours"] = summary["core_hours"] + other["core_hours"]
+    summary["core_hours_exact"] = bool(summary.get("core_hours_exact") and other.get("core_hours_exact"))
+    summary["finished"] = sum(1 for r in summary["runs"] if r["state"] == "done")
+
+
+def analyze(study_dir, figure=None, as_it_stands=False, out=None, with_folders=()):
     summary = load_summary(study_dir)
+    for folder in with_folders:
+        add_runs_of(summary, folder)
     partial = take_runs_as_they_stand(summary, study_dir) if as_it_stands else []
     out_dir = out or study_dir
     if figure is not None and figure != summary["study"]:
@@ -84,5 +100,7 @@ if __name__ == "__main__":
     parser.add_argument("--figure")
     parser.add_argument("--as-it-stands", action="store_true")
     parser.add_argument("--out", help="folder for the results and the plot (default: the study's)")
+    parser.add_argument("--with", dest="with_folders", action="append", default=[], metavar="FOLDER",
+                        help="take the runs of another study folder beside the study's own")
     args = parser.parse_args()
-    analyze(args.study_dir, args.figure, args.as_it_stands, args.out)
+    analyze(args.study_dir, args.figure, args.as_it_stands, args.out, args.with_folders)

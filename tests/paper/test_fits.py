@@ -629,5 +629,34 @@ class DiameterLaw(unittest.TestCase):
             self.assertLess(a_high - a_low, 0.3)
 
 
+class AnalysisWithOtherRuns(unittest.TestCase):
+    """analyze.py --with: the runs of another study folder beside the study's own (dropvol's
+    new seeds with the calibration's paper-length run)."""
+
+    def test_the_other_folders_runs_and_cost_are_added(self):
+        import analyze
+        with tempfile.TemporaryDirectory() as tmp:
+            folders = []
+            for k, name in enumerate(("study", "paper_run")):
+                folder = os.path.join(tmp, name)
+                run = write_run(os.path.join(folder, "runs", "run0"), 0.05, [(1.0, 1.0, 0.5 + 0.1 * k)])
+                with open(os.path.join(folder, "summary.txt"), "w") as f:
+                    f.write("study dropvol (paper, pool): 1 finished, 0 failed, 0 incomplete of 1\n")
+                with open(os.path.join(run["folder"], "knobs.json"), "w") as f:
+                    json.dump(run["knobs"], f)
+                with open(os.path.join(run["folder"], "state.txt"), "w") as f:
+                    f.write("done\n\n")
+                with open(os.path.join(run["folder"], "cost.txt"), "w") as f:
+                    f.write(f"{3600.0 * (k + 1)} 1\n")
+                folders.append(folder)
+            import study_io
+            summary = study_io.load_summary(folders[0])
+            analyze.add_runs_of(summary, folders[1])
+            self.assertEqual([r["name"] for r in summary["runs"]], ["run0", "paper_run/run0"])
+            self.assertEqual(summary["finished"], 2)
+            self.assertAlmostEqual(summary["core_hours"], 3.0)
+            self.assertTrue(summary["core_hours_exact"])
+
+
 if __name__ == "__main__":
     unittest.main()
