@@ -454,6 +454,27 @@ class StudyScene(unittest.TestCase):
                     self.assertEqual(ensemble.unknown_knobs(scene, knobs), [], f"{study} {size} {name}")
 
 
+class PaperSizePlan(unittest.TestCase):
+    """The paper size runs what doc/paper.md's criteria need, on seeds no example, calibration
+    or settings run uses, the phase diagrams at their shorter length."""
+
+    def test_counts_seeds_and_lengths(self):
+        import studies
+        used = {100003, 101009, 200003, 201007, 202021, 300007, 300017}
+        counts = dict(porediameter=8, porelength=6, dropvol=4, phaseac=9, phasead=6, conc=6, pvpflux=6)
+        for study, count in counts.items():
+            runs = studies.runs_of(study, "paper")
+            self.assertEqual(len(runs), count, study)
+            for name, knobs in runs:
+                self.assertNotIn(int(knobs["seed"]), used, f"{study} {name}")
+                # after the warm-up, as run_length.py counts them
+                fluid_steps = int(knobs["steps"]) / studies.run_dem_steps_per_fluid_step(knobs)
+                self.assertEqual(fluid_steps, 2.5e5 if study in ("phaseac", "phasead", "conc", "pvpflux") else 1e6)
+        diameters = sorted({float(k["D"]) for _, k in studies.runs_of("porediameter", "paper")})
+        self.assertEqual([round(d, 2) for d in diameters], [2.11, 2.82, 3.52, 4.23])
+        self.assertEqual(len({k["seed"] for _, k in studies.runs_of("porediameter", "paper")}), 2)
+
+
 class RunLength(unittest.TestCase):
     """run_length.py: P_max within each length of a run's own, counted in fluid steps after
     the warm-up, and the shortest length within 10 % of the full length's."""
