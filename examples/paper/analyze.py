@@ -26,7 +26,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from study_io import load_summary  # noqa: E402
+from study_io import kept_thermo, load_summary  # noqa: E402
 
 
 def _plain(value):
@@ -47,7 +47,7 @@ def take_runs_as_they_stand(summary, study_dir):
     finished runs only; returns their names."""
     def has_rows(r):  # its log, or the thermo rows compacted evidence kept
         folder = r.get("folder") or os.path.join(study_dir, "runs", r["name"])
-        return any(os.path.exists(os.path.join(folder, f)) for f in ("log.liggghts", "thermo.csv"))
+        return os.path.exists(os.path.join(folder, "log.liggghts")) or kept_thermo(folder) is not None
     partial = [r for r in summary["runs"] if r["state"] == "incomplete" and has_rows(r)]
     for r in partial:
         r["state"] = "done"

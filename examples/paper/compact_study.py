@@ -3,7 +3,7 @@
 repository (a study's own folder holds restart files and fluid checkpoints of tens of MB):
 summary.txt, results.json and the plots, the analysis's table if any, and per run its
 bursts.txt, its cost (cost.txt, run_cost), its deposit speed survey (deposit_speeds.txt) if
-any, and the thermo columns the analyses read (thermo.csv, every `every`-th row and
+any, and the thermo columns the analyses read (thermo.csv.gz, every `every`-th row and
 every row from a burst's window before its peak, BURST_WINDOW fluid steps, to half a window
 after it), with the ERROR line of a run that stopped. analyze.py reads the compacted folder
 as it reads the study (study_io).
@@ -13,6 +13,8 @@ Usage: compact_study.py <study folder> <destination> [--every N]
 import argparse
 import csv
 import glob
+import gzip
+import io
 import os
 import shutil
 import sys
@@ -56,7 +58,13 @@ def compact(study, dest, every=10):
         steps = columns["Step"]
         window = study_io.burst_window_dem_steps(run, study_io.read_knobs(run))
         near = lambda s: any(-window <= s - p <= window / 2 for p in peaks)  # noqa: E731
-        with open(os.path.join(out, "thermo.csv"), "w", newline="") as f:
+        for old in study_io.KEPT_THERMO:  # a folder compacted before keeps no stale copy
+            if os.path.exists(os.path.join(out, old)):
+                os.remove(os.path.join(out, old))
+        # gzip without a time stamp: the same rows give the same bytes (git sees no change)
+        with open(os.path.join(out, "thermo.csv.gz"), "wb") as raw, \
+                gzip.GzipFile(fileobj=raw, mode="wb", mtime=0) as packed, \
+                io.TextIOWrapper(packed, newline="") as f:
             w = csv.writer(f)
             w.writerow(names)
             for i, s in enumerate(steps):

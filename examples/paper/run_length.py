@@ -7,7 +7,7 @@ run given (doc/paper.md, "The studies' settings").
 
   python3 examples/paper/run_length.py RUN_DIR [RUN_DIR ...]
 
-A run folder holds log.liggghts or thermo.csv (compact_study.py) and knobs.json.
+A run folder holds log.liggghts or thermo.csv.gz (compact_study.py) and knobs.json.
 """
 import json
 import os

@@ -11,6 +11,7 @@ pore[17] the largest P / P_out so far, pore[18] the burst count, pore[6] V_dep, 
 """
 import csv
 import glob
+import gzip
 import json
 import os
 import re
@@ -79,15 +80,29 @@ def p_out(run_dir, rho=1.0):
     return rho * (t["dx"] / t["dt_f"]) ** 2 / 3.0
 
 
+# The thermo rows a compacted run kept (compact_study.py): gzip-compressed, or plain as the
+# folders compacted before it compressed them.
+KEPT_THERMO = ("thermo.csv.gz", "thermo.csv")
+
+
+def kept_thermo(run_dir):
+    """The path of a compacted run's kept thermo rows, or None."""
+    for name in KEPT_THERMO:
+        if os.path.exists(os.path.join(run_dir, name)):
+            return os.path.join(run_dir, name)
+    return None
+
+
 def thermo(run_dir):
     """{column: [values]} of all thermo rows of the run, or {} when it has none (a compacted
-    run: the rows its thermo.csv kept)."""
+    run: the rows its thermo.csv.gz or thermo.csv kept)."""
     log = os.path.join(run_dir, "log.liggghts")
     if not os.path.exists(log):
-        kept = os.path.join(run_dir, "thermo.csv")
-        if not os.path.exists(kept):
+        kept = kept_thermo(run_dir)
+        if kept is None:
             return {}
-        with open(kept, newline="") as f:
+        opener = gzip.open if kept.endswith(".gz") else open
+        with opener(kept, "rt", newline="") as f:
             rows = list(csv.reader(f))
         return {name: [float(row[j]) for row in rows[1:]] for j, name in enumerate(rows[0])}
     try:
