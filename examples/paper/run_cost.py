@@ -11,6 +11,8 @@ import re
 import threading
 import time
 
+from repeating import Repeating
+
 COST_FILE = "cost.txt"
 _LOOP_TIME = re.compile(r"^Loop time of ([0-9.eE+-]+) on (\d+) procs", re.M)
 
@@ -30,14 +32,22 @@ def _write_lines(run_dir, lines):
     os.replace(path + ".new", path)  # never half a file, whenever the runner dies
 
 
-class LaunchClock:
+class LaunchClock(Repeating):
     """Context manager around one launch of the runs in `run_dirs`, each on `cores` cores:
     appends the launch's line to each run's cost.txt and keeps it up to date."""
 
     def __init__(self, run_dirs, cores, every=60.0):
-        self.run_dirs, self.cores, self.every = list(run_dirs), int(cores), every
-        self.start, self.stop_event, self.thread = None, threading.Event(), None
+        super().__init__(every)
+        self.run_dirs, self.cores = list(run_dirs), int(cores)
+        self.start = None
         self.lock = threading.Lock()
+
+    def begin(self):
+        self.start = time.time()
+        self._update(first=True)
+
+    def tick(self):
+        self._update()
 
     def _update(self, first=False):
         seconds = time.time() - self.start
@@ -48,23 +58,6 @@ class LaunchClock:
                     lines.append([0.0, self.cores])
                 lines[-1] = [seconds, self.cores]
                 _write_lines(run_dir, lines)
-
-    def _loop(self):
-        while not self.stop_event.wait(self.every):
-            self._update()
-
-    def __enter__(self):
-        self.start = time.time()
-        self._update(first=True)
-        self.thread = threading.Thread(target=self._loop, daemon=True)
-        self.thread.start()
-        return self
-
-    def __exit__(self, *exc):
-        self.stop_event.set()
-        self.thread.join()
-        self._update()
-        return False
 
 
 def run_core_hours(run_dir):

@@ -10,6 +10,7 @@ import threading
 import time
 
 import ensemble
+from repeating import Repeating
 
 
 def last_step(run_dir):
@@ -42,14 +43,13 @@ def _hours(seconds):
     return f"{seconds / 3600:.2f} h" if seconds >= 3600 else f"{seconds / 60:.1f} min"
 
 
-class StudyProgress:
+class StudyProgress(Repeating):
     def __init__(self, study_dir, runs, parallel, every=60.0, printer=print):
+        super().__init__(every)
         self.study_dir, self.runs, self.parallel = study_dir, dict(runs), max(1, parallel)
-        self.every, self.printer = every, printer
+        self.printer = printer
         self.running = {}  # name -> (launch time, step at launch)
         self.lock = threading.Lock()
-        self.stop_event = threading.Event()
-        self.thread = None
 
     def _dir(self, name):
         return os.path.join(self.study_dir, "runs", name)
@@ -97,18 +97,5 @@ class StudyProgress:
             f.write(text + "\n")
         self.printer(text, flush=True)
 
-    def _loop(self):
-        while not self.stop_event.wait(self.every):
-            self.report()
-
-    def __enter__(self):
+    def tick(self):
         self.report()
-        self.thread = threading.Thread(target=self._loop, daemon=True)
-        self.thread.start()
-        return self
-
-    def __exit__(self, *exc):
-        self.stop_event.set()
-        self.thread.join()
-        self.report()
-        return False
