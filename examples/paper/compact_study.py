@@ -41,35 +41,38 @@ def compact(study, dest, every=10):
                 with open(target, "w") as f:
                     f.write(text.replace(os.path.abspath(study) + "/", "").replace(os.path.abspath(study), "."))
     for run in sorted(glob.glob(os.path.join(study, "runs", "*"))):
-        name = os.path.basename(run)
-        out = os.path.join(dest, "runs", name)
-        os.makedirs(out, exist_ok=True)
-        for keep in ("bursts.txt", "knobs.json", "deposit_speeds.txt", run_cost.COST_FILE):
-            if os.path.exists(os.path.join(run, keep)):
-                shutil.copy(os.path.join(run, keep), out)
-        state, reason = run_state(run)
-        with open(os.path.join(out, "state.txt"), "w") as f:
-            f.write(f"{state}\n{reason}\n")
-        columns = study_io.thermo(run)
-        if not columns:
-            continue
-        names = [c for c in COLUMNS if c in columns]
-        peaks = [b["step"] for b in study_io.bursts(run)]
-        steps = columns["Step"]
-        window = study_io.burst_window_dem_steps(run, study_io.read_knobs(run))
-        near = lambda s: any(-window <= s - p <= window / 2 for p in peaks)  # noqa: E731
-        for old in study_io.KEPT_THERMO:  # a folder compacted before keeps no stale copy
-            if os.path.exists(os.path.join(out, old)):
-                os.remove(os.path.join(out, old))
-        # gzip without a time stamp: the same rows give the same bytes (git sees no change)
-        with open(os.path.join(out, "thermo.csv.gz"), "wb") as raw, \
-                gzip.GzipFile(fileobj=raw, mode="wb", mtime=0) as packed, \
-                io.TextIOWrapper(packed, newline="") as f:
-            w = csv.writer(f)
-            w.writerow(names)
-            for i, s in enumerate(steps):
-                if i % every == 0 or i == len(steps) - 1 or near(s):
-                    w.writerow([f"{columns[c][i]:.8g}" for c in names])
+        compact_run(run, os.path.join(dest, "runs", os.path.basename(run)), every)
+
+
+def compact_run(run, out, every=10):
+    """One run's compact result in `out` (see the module's docstring)."""
+    os.makedirs(out, exist_ok=True)
+    for keep in ("bursts.txt", "knobs.json", "deposit_speeds.txt", run_cost.COST_FILE):
+        if os.path.exists(os.path.join(run, keep)):
+            shutil.copy(os.path.join(run, keep), out)
+    state, reason = run_state(run)
+    with open(os.path.join(out, "state.txt"), "w") as f:
+        f.write(f"{state}\n{reason}\n")
+    columns = study_io.thermo(run)
+    if not columns:
+        return
+    names = [c for c in COLUMNS if c in columns]
+    peaks = [b["step"] for b in study_io.bursts(run)]
+    steps = columns["Step"]
+    window = study_io.burst_window_dem_steps(run, study_io.read_knobs(run))
+    near = lambda s: any(-window <= s - p <= window / 2 for p in peaks)  # noqa: E731
+    for old in study_io.KEPT_THERMO:  # a folder compacted before keeps no stale copy
+        if os.path.exists(os.path.join(out, old)):
+            os.remove(os.path.join(out, old))
+    # gzip without a time stamp: the same rows give the same bytes (git sees no change)
+    with open(os.path.join(out, "thermo.csv.gz"), "wb") as raw, \
+            gzip.GzipFile(fileobj=raw, mode="wb", mtime=0) as packed, \
+            io.TextIOWrapper(packed, newline="") as f:
+        w = csv.writer(f)
+        w.writerow(names)
+        for i, s in enumerate(steps):
+            if i % every == 0 or i == len(steps) - 1 or near(s):
+                w.writerow([f"{columns[c][i]:.8g}" for c in names])
 
 
 if __name__ == "__main__":

@@ -297,10 +297,11 @@ def prepare_launch(run_dir, knobs, retry_failed=False):
 
 
 def launch_partitions(driver, study_dir, runs, partitions, ranks_per_run, mpirun, timeout,
-                      progress=None, retry_failed=False):
+                      progress=None, retry_failed=False, settled=None):
     """Runs `runs` (list of (name, knobs)) in multi-partition launches of up to `partitions`
     runs each until every run is done or failed (or a launch times out or settles nothing);
-    a run cut short continues from its newest restart file. Returns the launches made."""
+    a run cut short continues from its newest restart file. settled(name), if given, is
+    called for each run of a launch once the launch ends. Returns the launches made."""
     launches, pending = [], [name for name, _ in runs]
     knobs_of = dict(runs)
     while pending:
@@ -339,6 +340,8 @@ def launch_partitions(driver, study_dir, runs, partitions, ranks_per_run, mpirun
                    if _unreadable_restart(os.path.join(study_dir, "runs", name), launch_knobs[name])]
         cut_short = [name for name in batch
                      if run_state(os.path.join(study_dir, "runs", name))[0] == "incomplete"]
+        for name in batch if settled else []:
+            settled(name)
         if code is None or (cut_short == batch and not retried):
             break  # timed out, or nothing in the batch settled: stop rather than loop
         pending = retried + cut_short + pending
@@ -346,9 +349,10 @@ def launch_partitions(driver, study_dir, runs, partitions, ranks_per_run, mpirun
 
 
 def launch_pool(driver, study_dir, runs, parallel, ranks_per_run, mpirun, timeout,
-                progress=None, retry_failed=False):
+                progress=None, retry_failed=False, settled=None):
     """Runs each run in its own mpirun, `parallel` at a time; a run cut short continues from
-    its newest restart file, a finished one is left alone. Returns the launches made."""
+    its newest restart file, a finished one is left alone. settled(name), if given, is called
+    once a run's launches end. Returns the launches made."""
     def one(item):
         name, knobs = item
         run_dir = os.path.join(study_dir, "runs", name)
@@ -372,6 +376,8 @@ def launch_pool(driver, study_dir, runs, parallel, ranks_per_run, mpirun, timeou
                              seconds=round(time.time() - start, 1), cores=ranks_per_run))
             if not _unreadable_restart(run_dir, launch_knobs):
                 break
+        if settled:
+            settled(name)
         return made
 
     with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, parallel)) as pool:

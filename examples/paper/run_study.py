@@ -5,7 +5,7 @@
                [--mode pool|partitions] [--driver liggghts-lbm] [--mpirun mpirun]
                [--timeout S] [--add-run NAME:knob=value,...] [--set knob=value ...]
                [--restart-every FLUID_STEPS] [--fresh] [--retry-failed] [--runs REGEX]
-               [--progress-every S] [--summarize]
+               [--progress-every S] [--summarize] [--evidence DIR | --no-evidence] [--park]
                [--dry-run] [--no-analysis]
 
 Studies: singlejump collection dropvol porelength porediameter phaseac phasead conc pvpflux
@@ -29,8 +29,15 @@ name). Rerunning the same command leaves finished runs (and failed ones, unless
 restart file, and starts anew a run whose knobs changed; --fresh deletes every run first.
 While the runs go on it prints, every --progress-every seconds (and keeps in
 <out>/progress.txt), the runs done and to do, each running run's step and the time left.
+
+What the repository keeps (--evidence DIR; at the paper size doc/paper/<study> unless
+--no-evidence; committed_runs.py): each run's compact result as soon as it finishes, which no
+later launch runs again, and, when the runner is stopped (or --park), each run cut short with
+its newest restart file and fluid checkpoint, which a launch on a fresh clone unpacks and
+resumes. Commit DIR after each sitting and the same command continues the study anywhere.
 """
 import argparse
+import glob
 import json
 import re
 import os
@@ -38,8 +45,10 @@ import shlex
 import shutil
 import signal
 import sys
+import threading
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import committed_runs  # noqa: E402
 import ensemble  # noqa: E402
 import studies  # noqa: E402
 from study_progress import StudyProgress  # noqa: E402
@@ -65,6 +74,23 @@ def restart_knobs(knobs, restart_every=None):
     fluid_steps = (int(knobs["steps"]) + int(knobs["warmup"])) // n_dem
     every = restart_every if restart_every else max(1, fluid_steps // 50)
     return dict(knobs, restart_every=every * n_dem, checkpoint_keep=2)
+
+
+def park_cut_short(out, evidence, runs, study, size):
+    """Keeps each settled run's compact result in evidence and parks each run cut short
+    (committed_runs), and says so."""
+    for name, _ in runs:
+        run_dir = os.path.join(out, "runs", name)
+        if not os.path.isdir(run_dir) or committed_runs.committed_state(evidence, name):
+            continue
+        if committed_runs.keep_settled(run_dir, evidence, name):
+            print(f"  {name}: kept in {evidence}", flush=True)
+        elif ensemble.run_state(run_dir)[0] == "incomplete":
+            archive = committed_runs.park(run_dir, evidence, name)
+            print(f"  {name}: " + (f"parked in {archive} ({os.path.getsize(archive) / 1e6:.1f} MB)"
+                                   if archive else "no restart file yet: not parked"), flush=True)
+    committed_runs.write_summary(evidence, study, size, [name for name, _ in runs])
+    print(f"run_study: commit {evidence} to keep the study's state in the repository", flush=True)
 
 
 def main():
@@ -99,6 +125,13 @@ def main():
                         help="launch nothing: summarize and analyze the runs as they stand (also "
                              "while the study runs, from another shell)")
     parser.add_argument("--no-analysis", action="store_true")
+    parser.add_argument("--evidence", metavar="DIR", default=None,
+                        help="where the repository keeps the study's runs (default at the paper "
+                             "size: doc/paper/<study>)")
+    parser.add_argument("--no-evidence", action="store_true", help="keep nothing in the repository")
+    parser.add_argument("--park", action="store_true",
+                        help="launch nothing: keep the finished runs and park the runs cut short "
+                             "into --evidence as they stand")
     args = parser.parse_args()
 
     runs = studies.runs_of(args.study, args.size)
@@ -106,6 +139,8 @@ def main():
     changed = dict(parse_added_run(":" + ",".join(args.set), {})[1]) if args.set else {}
     runs = [(name, restart_knobs(dict(knobs, **changed), args.restart_every)) for name, knobs in runs]
     out = os.path.abspath(args.out or f"{args.study}_{args.size}")
+    evidence = None if args.no_evidence else (
+        args.evidence or (os.path.join(REPO, "doc", "paper", args.study) if args.size == "paper" else None))
     paper_runs = studies.runs_of(args.study, "paper")
     paper_cost = studies.core_hours(paper_runs)
     fluid_steps = max((int(k["steps"]) + int(k["warmup"])) / studies.run_dem_steps_per_fluid_step(k)
@@ -133,10 +168,24 @@ def main():
     elif not args.summarize:
         shutil.rmtree(os.path.join(out, "launches"), ignore_errors=True)  # partitions' scratch
     os.makedirs(out, exist_ok=True)
+    names = [name for name, _ in runs]
+    if args.park:
+        if not evidence:
+            sys.exit("--park needs --evidence (or --size paper)")
+        park_cut_short(out, evidence, runs, args.study, args.size)
+        return 0
     scene = ensemble.study_scene(out) if not args.summarize else None
+    kept = {}  # runs whose compact result the repository keeps: never run again
     for name, knobs in runs if not args.summarize else []:
         if args.runs and not re.search(args.runs, name):
             continue
+        if evidence:
+            kept[name] = committed_runs.committed_state(evidence, name)
+            if kept[name]:
+                print(f"  {name}: kept in {evidence} ({kept[name]}): not run again")
+                continue
+            if committed_runs.unpark(evidence, name, os.path.join(out, "runs", name)):
+                print(f"  {name}: unpacked from {committed_runs.parked_archive(evidence, name)}")
         unknown = ensemble.unknown_knobs(scene, knobs)
         if unknown:
             sys.exit(f"run {name}: knob(s) {', '.join(unknown)} not defined by {scene}, the copy of "
@@ -152,16 +201,27 @@ def main():
         print(f"run_study: signal {signum}: asking the runs under way to write a restart "
               "file and stop; rerun the same command to resume", flush=True)
         ensemble.stop_running_launches()
+        if evidence:
+            park_cut_short(out, evidence, runs, args.study, args.size)
         sys.exit(128 + signum)
     signal.signal(signal.SIGTERM, stop)
     signal.signal(signal.SIGINT, stop)
     launch = ensemble.launch_pool if args.mode == "pool" else ensemble.launch_partitions
     launches = []
-    chosen = [(name, knobs) for name, knobs in runs if not args.runs or re.search(args.runs, name)]
+    chosen = [(name, knobs) for name, knobs in runs
+              if (not args.runs or re.search(args.runs, name)) and not kept.get(name)]
+    lock = threading.Lock()
+
+    def settled(name):  # a run's compact result is kept the moment it finishes
+        with lock:
+            if evidence and committed_runs.keep_settled(os.path.join(out, "runs", name), evidence, name):
+                committed_runs.write_summary(evidence, args.study, args.size, names)
+                print(f"  {name}: kept in {evidence}", flush=True)
     if not args.summarize:
         with StudyProgress(out, chosen, args.parallel, args.progress_every) as progress:
             launches = launch(args.driver, out, chosen, args.parallel, args.ranks_per_run, args.mpirun,
-                              args.timeout, progress=progress, retry_failed=args.retry_failed)
+                              args.timeout, progress=progress, retry_failed=args.retry_failed,
+                              settled=settled)
     for entry in launches:
         print(f"launch ({entry['seconds']} s, exit {entry['exit_code']}): "
               + " ".join(shlex.quote(c) for c in entry["command"]))
@@ -170,9 +230,12 @@ def main():
         with open(earlier) as f:
             launches = json.load(f).get("launches", []) + launches
     summary = ensemble.write_summary(out, args.study, args.size, runs, launches, args.mode)
-    if not args.no_analysis and (summary["finished"] or args.summarize):
+    if evidence:
+        committed_runs.write_summary(evidence, args.study, args.size, names)
+    analysed = evidence if evidence and glob.glob(os.path.join(evidence, "runs", "*", "state.txt")) else out
+    if not args.no_analysis and (summary["finished"] or args.summarize or analysed == evidence):
         import analyze
-        analyze.analyze(out)
+        analyze.analyze(analysed)
     return 0 if summary["finished"] else 1
 
 

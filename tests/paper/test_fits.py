@@ -679,5 +679,72 @@ class AnalysisWithOtherRuns(unittest.TestCase):
             self.assertTrue(summary["core_hours_exact"])
 
 
+class CommittedRuns(unittest.TestCase):
+    """A study continues from what the repository keeps (committed_runs.py): a run cut short
+    is parked with its newest restart file and the checkpoint that file names, unpacked on a
+    machine that lacks it, and replaced by its compact result once it finishes."""
+
+    @staticmethod
+    def cut_short_run(folder):
+        """A run's folder (write_run) with restart files and fluid checkpoints beside it; the
+        bytes of each file by name."""
+        run = write_run(folder, 0.07, [(10.0, 1.0, 0.9)])
+        extra = {"cost.txt": b"60.0 1\n", "knobs.json": json.dumps(run["knobs"]).encode(), "stdout.txt": b"screen",
+                 # fix lbm/pore's record ends with the checkpoint's path and a zero
+                 "restart.a": b"\x00\x01atoms.fluid.pore.fluid.2000\x00", "pore.fluid.2000.0": b"A" * 64,
+                 "pore.fluid.2000.1": b"B" * 64, "pore.fluid.1000.0": b"old"}
+        for name, data in extra.items():
+            with open(os.path.join(folder, name), "wb") as f:
+                f.write(data)
+        os.utime(os.path.join(folder, "restart.a"), (1e9, 1e9))
+        with open(os.path.join(folder, "restart.b"), "wb") as f:  # newer, names no checkpoint here
+            f.write(b"pore.fluid.3000\x00")
+        files = {}
+        for name in os.listdir(folder):
+            with open(os.path.join(folder, name), "rb") as f:
+                files[name] = f.read()
+        return files
+
+    def test_a_parked_run_unpacks_on_a_fresh_machine_and_goes_once_kept(self):
+        import committed_runs
+        import ensemble
+        with tempfile.TemporaryDirectory() as tmp:
+            run, evidence = os.path.join(tmp, "here", "run0"), os.path.join(tmp, "evidence")
+            files = self.cut_short_run(run)
+            archive = committed_runs.park(run, evidence, "run0")
+            self.assertEqual(archive, committed_runs.parked_archive(evidence, "run0"))
+            committed_runs.write_summary(evidence, "porelength", "paper", ["run0", "run1"])
+            with open(os.path.join(evidence, "summary.txt")) as f:
+                self.assertIn("1 parked, 1 to do of 2", f.readline())
+            self.assertIsNone(committed_runs.committed_state(evidence, "run0"))
+            # A machine with its own copy resumes from it; a fresh one unpacks the archive:
+            # the newest restart file with a checkpoint (restart.a), both ranks' checkpoint
+            # files, and what the run appends to; not the older checkpoint, not the screen.
+            self.assertFalse(committed_runs.unpark(evidence, "run0", run))
+            fresh = os.path.join(tmp, "there", "run0")
+            self.assertTrue(committed_runs.unpark(evidence, "run0", fresh))
+            expected = sorted(set(files) - {"pore.fluid.1000.0", "stdout.txt", "restart.b"})
+            self.assertEqual(sorted(os.listdir(fresh)), expected)
+            for name in expected:
+                with open(os.path.join(fresh, name), "rb") as f:
+                    self.assertEqual(f.read(), files[name])
+            # Once it finishes, its compact result replaces the parked copy.
+            with open(os.path.join(fresh, "log.liggghts"), "a") as f:
+                f.write(ensemble.DONE_MARK + "\n")
+            self.assertTrue(committed_runs.keep_settled(fresh, evidence, "run0"))
+            self.assertEqual(committed_runs.committed_state(evidence, "run0"), "done")
+            self.assertFalse(os.path.exists(os.path.join(evidence, committed_runs.PARKED)))
+
+    def test_a_run_without_a_checkpoint_is_not_parked(self):
+        import committed_runs
+        with tempfile.TemporaryDirectory() as tmp:
+            run = os.path.join(tmp, "run0")
+            os.makedirs(run)
+            with open(os.path.join(run, "restart.a"), "wb") as f:
+                f.write(b"pore.fluid.2000\x00")  # its checkpoint was never written
+            self.assertIsNone(committed_runs.park(run, os.path.join(tmp, "evidence"), "run0"))
+            self.assertFalse(committed_runs.keep_settled(run, os.path.join(tmp, "evidence"), "run0"))
+
+
 if __name__ == "__main__":
     unittest.main()
