@@ -8,6 +8,9 @@
 #   sbatch --export=STUDY=dropvol,SIZE=paper examples/paper/slurm_study.sh
 #
 # P = SLURM_NTASKS / RANKS_PER_RUN runs at a time. With 100 runs on 100 tasks, one batch.
+# At the paper size the runner keeps each finished run in doc/paper/<study>/ and, when Slurm
+# ends the job (SIGTERM), parks the runs cut short there: commit it, and the next job (here or
+# on any clone) continues the study from it (committed_runs.py).
 #SBATCH --job-name=lbm-pore-study
 #SBATCH --ntasks=100
 #SBATCH --cpus-per-task=1
