@@ -746,5 +746,54 @@ class CommittedRuns(unittest.TestCase):
             self.assertFalse(committed_runs.keep_settled(run, os.path.join(tmp, "evidence"), "run0"))
 
 
+class FigureTable(unittest.TestCase):
+    """doc/paper.md's table of the figures is the one the committed evidence gives, and each
+    verdict applies the criterion written before the runs (verdicts.py)."""
+
+    def test_the_doc_s_table_is_the_evidence_s(self):
+        import figure_table
+        with open(figure_table.DOC) as f:
+            text = f.read()
+        self.assertEqual(figure_table.replaced(text, figure_table.table()), text,
+                         "run examples/paper/figure_table.py")
+
+    def test_law_verdicts_apply_the_criteria(self):
+        import verdicts
+        met = dict(excess_coefficient=[0.25, 0.2, 0.3], pearson=[0.85, 0.7, 0.9])
+        self.assertEqual(verdicts.verdict("porelength", met, 6, 6)[1], "meets")
+        low = dict(met, pearson=[0.74, 0.5, 0.9])
+        self.assertEqual(verdicts.verdict("porelength", low, 6, 6)[1], "misses: Pearson 0.74 below 0.8")
+        self.assertEqual(verdicts.verdict("porelength", met, 3, 6)[1], "provisional (3 of 6 runs): meets")
+        self.assertEqual(verdicts.verdict("porelength", None, 0, 6)[1], "no numbers: no run finished")
+        law = dict(diameter_law=dict(K=[1.2, 1.0, 1.4], a=[0.9, 0.7, 1.1]))
+        self.assertEqual(verdicts.verdict("porediameter", law, 8, 8)[1],
+                         "misses: K 1.2 outside 0.91 +- 0.1")
+        one_d = dict(diameter_law=dict(K=[None] * 3, a=[None] * 3), K_excess=[0.7, 0.6, 0.8], finished=1)
+        ours, judged = verdicts.verdict("porediameter", one_d, 1, 8)
+        self.assertIn("over the bursts", ours)
+        self.assertEqual(judged, "provisional (1 of 8 runs): no numbers: too few runs for the figure")
+        drop = dict(excess_through_origin=[1.3, 1.1, 1.5], pearson=[0.95, 0.9, 0.99])
+        self.assertEqual(verdicts.verdict("dropvol", drop, 5, 5)[1], "misses: Pearson 0.95 outside 0.5-0.9")
+        self.assertEqual(verdicts.verdict("conc", dict(onset=0.02), 6, 6)[1], "meets")
+        self.assertEqual(verdicts.verdict("pvpflux", dict(threshold=0.5), 6, 6)[1],
+                         "misses: threshold 0.5 outside 0.35 +- 0.1")
+
+    def test_phase_diagram_verdicts(self):
+        import verdicts
+        self.assertAlmostEqual(verdicts.crossing([0.1, 0.05, 0.2], [0.4, 0.2, 0.8], 0.3), 0.075)
+        self.assertIsNone(verdicts.crossing([0.1, 0.2], [0.1, 0.2], 0.3))
+        # the contours' k_a the same at both k_c: no trend; a factor 4 apart: a trend
+        flat = [dict(x=ka, y=kc, P_max=p) for kc in (1e-3, 1e-1)
+                for ka, p in ((0.05, 0.1), (0.1, 0.5), (0.2, 0.9))]
+        ours, judged = verdicts.verdict("phaseac", dict(points=flat), 6, 6)
+        self.assertEqual(judged, "no trend in k_c; the contours' place in k_a not judged (the paper draws it only)")
+        self.assertIn("0.3 P_out at k_a 0.075-0.075 over 2 k_c", ours)
+        shifted = flat[:3] + [dict(pt, x=pt["x"] * 4) for pt in flat[3:]]
+        self.assertTrue(verdicts.verdict("phaseac", dict(points=shifted), 6, 6)[1].startswith("misses"))
+        rising = [dict(x=0.1, y=r, P_max=p) for r, p in ((0.2, 0.1), (0.3, 0.3), (0.4, 0.2), (0.5, 0.7))]
+        self.assertAlmostEqual(verdicts.spearman([0.2, 0.3, 0.4, 0.5], [0.1, 0.3, 0.2, 0.7]), 0.8)
+        self.assertEqual(verdicts.verdict("phasead", dict(points=rising), 4, 6)[1], "provisional (4 of 6 runs): meets")
+
+
 if __name__ == "__main__":
     unittest.main()
