@@ -50,9 +50,13 @@ def row(figure, repo=REPO):
     if os.path.exists(path):
         with open(path) as f:
             results = json.load(f)
+    cost = None
+    if results and results.get("core_hours"):
+        cost = f"{results['core_hours']:.1f}" + ("" if results.get("core_hours_exact") else " (at least)")
     if figure in FROM_ONE_RUN:
         planned, finished = 1, 1 if results and results.get("finished") else 0
-        length, cost = "one run of a study", "—"
+        length = "one paper-length run"
+        cost = cost or "—"
     else:
         runs = studies.runs_of(figure, "paper")
         extra = [os.path.join(repo, w) for w in WITH.get(figure, [])]
@@ -60,10 +64,7 @@ def row(figure, repo=REPO):
         finished = _finished(evidence) + sum(_finished(w) for w in extra)
         steps = {int(k["steps"]) // studies.run_dem_steps_per_fluid_step(k) for _, k in runs}
         length = " / ".join(_power_of_ten(s) for s in sorted(steps)) + " fluid steps after the warm-up"
-        if results and results.get("core_hours"):
-            cost = f"{results['core_hours']:.1f}" + ("" if results.get("core_hours_exact") else " (at least)")
-        else:
-            cost = f"est. {studies.core_hours(runs):.0f}"
+        cost = cost or f"est. {studies.core_hours(runs):.0f}"
     ours, verdict = verdicts.verdict(figure, results, finished, planned)
     plot = ""
     if results and results.get("plot"):
