@@ -85,21 +85,27 @@ def replaced(text, new_table):
     return text[:start] + "\n" + new_table + "\n" + text[end:]
 
 
+def rewrite_doc(check=False):
+    """Rewrites the table in doc/paper.md; with check, only says whether it is current."""
+    with open(DOC) as f:
+        text = f.read()
+    new = replaced(text, table())
+    if check or new == text:
+        return new == text
+    with open(DOC + ".new", "w") as f:
+        f.write(new)
+    os.replace(DOC + ".new", DOC)
+    return True
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--check", action="store_true")
     args = parser.parse_args()
-    with open(DOC) as f:
-        text = f.read()
-    new = replaced(text, table())
-    if args.check:
-        if new != text:
-            print("doc/paper.md's table of the figures is not the one the evidence gives: "
-                  "run examples/paper/figure_table.py", file=sys.stderr)
-            return 1
-        return 0
-    with open(DOC, "w") as f:
-        f.write(new)
+    if not rewrite_doc(args.check):
+        print("doc/paper.md's table of the figures is not the one the evidence gives: "
+              "run examples/paper/figure_table.py", file=sys.stderr)
+        return 1
     return 0
 
 

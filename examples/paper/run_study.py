@@ -76,6 +76,22 @@ def restart_knobs(knobs, restart_every=None):
     return dict(knobs, restart_every=every * n_dem, checkpoint_keep=2)
 
 
+def refresh_evidence(evidence, no_analysis=False):
+    """The analysis of the kept runs and, for the repository's own evidence, doc/paper.md's
+    table of the figures (figure_table.py), so that a commit of the folder is consistent."""
+    if no_analysis:
+        return
+    import analyze
+    import figure_table
+    try:
+        analyze.analyze(evidence)
+    except Exception as error:  # noqa: BLE001  a figure that cannot be drawn yet stops no run
+        print(f"run_study: the analysis of {evidence} failed: {error}", flush=True)
+        return
+    if os.path.dirname(os.path.abspath(evidence)) == os.path.join(REPO, "doc", "paper"):
+        figure_table.rewrite_doc()
+
+
 def park_cut_short(out, evidence, runs, study, size):
     """Keeps each settled run's compact result in evidence and parks each run cut short
     (committed_runs), and says so."""
@@ -217,6 +233,7 @@ def main():
             if evidence and committed_runs.keep_settled(os.path.join(out, "runs", name), evidence, name):
                 committed_runs.write_summary(evidence, args.study, args.size, names)
                 print(f"  {name}: kept in {evidence}", flush=True)
+                refresh_evidence(evidence, args.no_analysis)
     if not args.summarize:
         with StudyProgress(out, chosen, args.parallel, args.progress_every) as progress:
             launches = launch(args.driver, out, chosen, args.parallel, args.ranks_per_run, args.mpirun,
@@ -232,10 +249,11 @@ def main():
     summary = ensemble.write_summary(out, args.study, args.size, runs, launches, args.mode)
     if evidence:
         committed_runs.write_summary(evidence, args.study, args.size, names)
-    analysed = evidence if evidence and glob.glob(os.path.join(evidence, "runs", "*", "state.txt")) else out
-    if not args.no_analysis and (summary["finished"] or args.summarize or analysed == evidence):
+    if evidence and glob.glob(os.path.join(evidence, "runs", "*", "state.txt")):
+        refresh_evidence(evidence, args.no_analysis)
+    elif not args.no_analysis and (summary["finished"] or args.summarize):
         import analyze
-        analyze.analyze(analysed)
+        analyze.analyze(out)
     return 0 if summary["finished"] else 1
 
 
