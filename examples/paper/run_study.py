@@ -32,9 +32,9 @@ While the runs go on it prints, every --progress-every seconds (and keeps in
 
 What the repository keeps (--evidence DIR; at the paper size doc/paper/<study> unless
 --no-evidence; committed_runs.py): each run's compact result as soon as it finishes, which no
-later launch runs again, and, when the runner is stopped (or --park), each run cut short with
-its newest restart file and fluid checkpoint, which a launch on a fresh clone unpacks and
-resumes. Commit DIR after each sitting and the same command continues the study anywhere.
+later launch runs again, and, when the runner is stopped or ends with runs cut short (a
+timeout; or --park from another shell), each such run with its newest restart file and fluid
+checkpoint, which a launch on a fresh clone unpacks and resumes. Commit DIR after each sitting and the same command continues the study anywhere.
 """
 import argparse
 import glob
@@ -247,7 +247,9 @@ def main():
         with open(earlier) as f:
             launches = json.load(f).get("launches", []) + launches
     summary = ensemble.write_summary(out, args.study, args.size, runs, launches, args.mode)
-    if evidence:
+    if evidence and launches:  # runs a launch cut short (a timeout) are parked as when stopped
+        park_cut_short(out, evidence, runs, args.study, args.size)
+    elif evidence:
         committed_runs.write_summary(evidence, args.study, args.size, names)
     if evidence and glob.glob(os.path.join(evidence, "runs", "*", "state.txt")):
         refresh_evidence(evidence, args.no_analysis)
