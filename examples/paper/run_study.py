@@ -97,8 +97,9 @@ def park_cut_short(out, evidence, runs, study, size):
     (committed_runs), and says so."""
     for name, _ in runs:
         run_dir = os.path.join(out, "runs", name)
-        if not os.path.isdir(run_dir) or committed_runs.committed_state(evidence, name):
-            continue
+        if not os.path.exists(os.path.join(run_dir, "log.liggghts")) or \
+                committed_runs.committed_state(evidence, name):
+            continue  # never started (a queued run the stop found), or kept already
         if committed_runs.keep_settled(run_dir, evidence, name):
             print(f"  {name}: kept in {evidence}", flush=True)
         elif ensemble.run_state(run_dir)[0] == "incomplete":
