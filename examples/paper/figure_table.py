@@ -10,11 +10,13 @@ from another study's runs (singlejump, collection) keeps its results in the same
   figure_table.py --check    exit 1 if the table there is not the one the evidence gives
 """
 import argparse
+import glob
 import json
 import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import run_length  # noqa: E402
 import studies  # noqa: E402
 import study_io  # noqa: E402
 import verdicts  # noqa: E402
@@ -74,10 +76,37 @@ def row(figure, repo=REPO):
     return "| " + " | ".join(c.replace("|", "/") for c in cells) + " |"
 
 
+# The finished paper-length runs, which set the phase diagrams' length (run_length.py).
+PAPER_LENGTH_RUNS = ("doc/calibration/paper_run/runs/*", "doc/paper/porediameter/runs/*",
+                     "doc/paper/porelength/runs/*", "doc/paper/dropvol/runs/*")
+
+
+def paper_length_runs(repo=REPO):
+    def done(run):
+        try:
+            with open(os.path.join(run, "state.txt")) as f:
+                return f.readline().strip() == "done"
+        except OSError:
+            return False
+    return sorted(run for pattern in PAPER_LENGTH_RUNS for run in glob.glob(os.path.join(repo, pattern))
+                  if done(run))
+
+
+def phase_diagram_length(repo=REPO):
+    """(the length the rule gives on the committed paper-length runs, how many runs)."""
+    runs = paper_length_runs(repo)
+    shortest, _ = run_length.shortest_length(runs)
+    return shortest, len(runs)
+
+
 def table(repo=REPO):
     lines = ["| figure | paper | ours (95 % interval) | runs finished; length | core-hours | verdict | plot |",
              "|---|---|---|---|---|---|---|"]
-    return "\n".join(lines + [row(f, repo) for f in FIGURES])
+    shortest, count = phase_diagram_length(repo)
+    rule = (f"The phase diagrams' length by its rule (`run_length.py` on the {count} finished "
+            f"paper-length runs kept): {_power_of_ten(shortest) if shortest else 'none'} fluid steps; "
+            f"they run {_power_of_ten(studies.PHASE_DIAGRAM_STEPS // studies.N_DEM)}.")
+    return "\n".join(lines + [row(f, repo) for f in FIGURES] + ["", rule])
 
 
 def replaced(text, new_table):

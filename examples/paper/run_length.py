@@ -38,14 +38,15 @@ def p_max_by_length(run_dir):
                                for L in LENGTHS if L <= full_length * 1.0001}
 
 
-def main(argv):
-    if not argv:
-        sys.exit(__doc__)
+def shortest_length(run_dirs):
+    """(the shortest of LENGTHS whose P_max is within AGREEMENT of the full length's on every
+    run, or None; a line per run)."""
     shortest_ok = {L: True for L in LENGTHS}
-    for run_dir in argv:
+    lines = []
+    for run_dir in run_dirs:
         found = p_max_by_length(run_dir)
         if found is None:
-            print(f"{run_dir}: no thermo rows after the warm-up")
+            lines.append(f"{run_dir}: no thermo rows after the warm-up")
             continue
         full_length, full, by_length = found
         parts = []
@@ -56,10 +57,18 @@ def main(argv):
             ratio = by_length[L] / full
             shortest_ok[L] &= abs(ratio - 1.0) <= AGREEMENT
             parts.append(f"{L:.3g}: {by_length[L]:.3f} ({ratio:.2f})")
-        print(f"{run_dir}: {full_length:.3g} fluid steps, P_max {full:.3f} P_out; within " + ", ".join(parts))
+        lines.append(f"{run_dir}: {full_length:.3g} fluid steps, P_max {full:.3f} P_out; within " + ", ".join(parts))
     ok = [L for L in LENGTHS if shortest_ok[L]]
+    return (min(ok) if ok else None), lines
+
+
+def main(argv):
+    if not argv:
+        sys.exit(__doc__)
+    shortest, lines = shortest_length(argv)
+    print("\n".join(lines))
     print(f"shortest length whose P_max is within {AGREEMENT:.0%} of the full length's on every run: "
-          + (f"{min(ok):.3g} fluid steps" if ok else "none"))
+          + (f"{shortest:.3g} fluid steps" if shortest else "none"))
 
 
 if __name__ == "__main__":

@@ -757,6 +757,17 @@ class FigureTable(unittest.TestCase):
         self.assertEqual(figure_table.replaced(text, figure_table.table()), text,
                          "run examples/paper/figure_table.py")
 
+    def test_the_phase_diagrams_are_as_long_as_their_rule_asks(self):
+        # The rule fixed before them (doc/paper.md, "The studies' settings"), applied to every
+        # finished paper-length run the repository keeps: a run that raises the length fails
+        # here until studies.PHASE_DIAGRAM_STEPS follows.
+        import figure_table
+        import studies
+        shortest, count = figure_table.phase_diagram_length()
+        self.assertGreaterEqual(count, 2)
+        self.assertIsNotNone(shortest)
+        self.assertLessEqual(shortest, studies.PHASE_DIAGRAM_STEPS // studies.N_DEM)
+
     def test_law_verdicts_apply_the_criteria(self):
         import verdicts
         met = dict(excess_coefficient=[0.25, 0.2, 0.3], pearson=[0.85, 0.7, 0.9])
