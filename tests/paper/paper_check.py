@@ -21,6 +21,11 @@ own files independently of the code it checks:
             and no burst recorded twice. Then SIGTERM to a runner alone (Ctrl-C, a batch
             system's end of job): it passes the request on, its run writes a forced restart
             file and stops, no process is left, and the same command resumes from that file.
+            That runner keeps the study in an evidence folder (--evidence, as the paper size
+            does in doc/paper/<study>): stopped, it parks the run there; a launch into an
+            empty folder (a fresh clone) with the same evidence unpacks it, resumes it,
+            finishes, keeps its compact result and drops the archive, and its burst records
+            equal, byte for byte, those of the resume in the run's own folder.
             A third launch leaves the finished run alone.
 
 Usage: paper_check.py --driver liggghts-lbm --repo <source root> --python /usr/bin/python3 <case>
@@ -196,8 +201,9 @@ def resume(args, work):
     # and the same command resumes from that file.
     term = os.path.join(work, "term")
     term_log = os.path.join(term, "runs", "seed_100003", "log.liggghts")
+    evidence = os.path.join(work, "evidence")
     cmd_term = [args.python, os.path.join(args.repo, "examples", "paper", "run_study.py"), *base,
-                "--driver", args.driver, "--out", term]
+                "--driver", args.driver, "--out", term, "--evidence", evidence]
     runner = subprocess.Popen(cmd_term, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
                               start_new_session=True)
     deadline = time.time() + 150
@@ -215,7 +221,22 @@ def resume(args, work):
     forced = [n for n in os.listdir(os.path.dirname(term_log)) if n.startswith("restart_forced_liggghts_")]
     ok &= check("SIGTERM stops the runs with a restart file", not left and len(forced) == 1,
                 f"processes left {left}, forced restart files {forced}", "none left, one file")
+    parked = os.path.join(evidence, "parked", "seed_100003.tar.xz")
+    ok &= check("the stopped run parked in the evidence", os.path.exists(parked), parked, "exists")
+    fresh = os.path.join(work, "fresh")
+    unpacked = run_study(args, fresh, *base, "--evidence", evidence)
+    with open(os.path.join(evidence, "runs", "seed_100003", "state.txt")) as f:
+        kept = f.readline().strip()
+    ok &= check("a fresh folder continues from the evidence", "unpacked from" in unpacked.stdout
+                and "resumes from restart_forced_liggghts_" in unpacked.stdout and kept == "done"
+                and not os.path.exists(parked),
+                [line for line in unpacked.stdout.splitlines() if "seed_100003:" in line and "-var" not in line]
+                + [f"kept: {kept}", f"parked left: {os.path.exists(parked)}"],
+                "unpacked, resumed from the forced restart, kept as done, archive dropped")
     resumed = run_study(args, term, *base)
+    same = open(os.path.join(term, "runs", "seed_100003", "bursts.txt")).read() == \
+        open(os.path.join(fresh, "runs", "seed_100003", "bursts.txt")).read()
+    ok &= check("the unpacked resume equals the resume in place", same, same, "bursts.txt byte for byte")
     ok &= check("resumed from the forced restart", "resumes from restart_forced_liggghts_" in resumed.stdout
                 and json.load(open(os.path.join(term, "summary.json")))["finished"] == 1,
                 [line for line in resumed.stdout.splitlines() if "seed_100003:" in line and "-var" not in line],
