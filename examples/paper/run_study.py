@@ -34,7 +34,8 @@ What the repository keeps (--evidence DIR; at the paper size doc/paper/<study> u
 --no-evidence; committed_runs.py): each run's compact result as soon as it finishes, which no
 later launch runs again, and, when the runner is stopped or ends with runs cut short (a
 timeout; or --park from another shell), each such run with its newest restart file and fluid
-checkpoint, which a launch on a fresh clone unpacks and resumes. Commit DIR after each sitting and the same command continues the study anywhere.
+checkpoint, which a launch on a fresh clone unpacks and resumes. Commit DIR after each sitting
+and the same command continues the study anywhere.
 """
 import argparse
 import glob
