@@ -158,7 +158,8 @@ def main():
     runs = [(name, restart_knobs(dict(knobs, **changed), args.restart_every)) for name, knobs in runs]
     out = os.path.abspath(args.out or f"{args.study}_{args.size}")
     evidence = None if args.no_evidence else (
-        args.evidence or (os.path.join(REPO, "doc", "paper", args.study) if args.size == "paper" else None))
+        args.evidence or (os.path.join(REPO, "doc", "paper", args.study) if args.size == "paper"
+                          else None))
     paper_runs = studies.runs_of(args.study, "paper")
     paper_cost = studies.core_hours(paper_runs)
     fluid_steps = max((int(k["steps"]) + int(k["warmup"])) / studies.run_dem_steps_per_fluid_step(k)

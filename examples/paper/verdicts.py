@@ -46,7 +46,8 @@ def porediameter(r):
     k, e = _value(K), _value(a)
     ours = f"K {_fmt(K)}, exponent of D {_fmt(a)} (intervals over seeds)"
     if not math.isfinite(k):  # one diameter so far: its bursts' K, not yet the law over D
-        ours = f"K {_fmt(r.get('K_excess'))} over the bursts of {r.get('finished')} run(s); the law over D not yet"
+        ours = (f"K {_fmt(r.get('K_excess'))} over the bursts of {r.get('finished')} run(s); "
+                "the law over D not yet")
     return ours, _judge([(_within(k, 0.91, 0.1), f"K {k:.3g} outside 0.91 +- 0.1"),
                          (_within(e, 1.0, 0.2), f"exponent {e:.3g} outside 1 +- 0.2")])
 
