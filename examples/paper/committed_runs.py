@@ -12,10 +12,13 @@ a study on a machine that holds nothing but a clone:
 
 The fluid checkpoint dominates a parked run (the paper's scene: 14-32 MB of populations,
 8-19 MB compressed: the low bits of doubles do not compress), so runs are parked only when a
-runner stops with them unfinished, never as a matter of course.
+runner stops with them unfinished, never as a matter of course, and only once they are
+MIN_PARKED_SHARE done: git keeps every archive, and a run's first quarter costs less to make
+again than its archive weighs in the history.
 
 DIR/summary.txt says what is kept: its first line is what study_io.load_summary reads.
 """
+import json
 import os
 import re
 import shutil
@@ -23,8 +26,10 @@ import tarfile
 
 import compact_study
 from ensemble import restart_files, run_state
+from study_progress import end_step, last_step
 
 PARKED = "parked"
+MIN_PARKED_SHARE = 0.25
 # The files a run needs to continue besides its restart file and checkpoint (stdout.txt
 # repeats the log; a resumed launch appends to both, so a missing one is simply begun anew).
 KEPT_TO_RESUME = ("knobs.json", "log.liggghts", "bursts.txt", "cost.txt", "deposit_speeds.txt")
@@ -57,9 +62,22 @@ def checkpoint_files(run_dir, restart_file):
                   and _CHECKPOINT_FILE.match(name).group(1).encode() + b"\x00" in data)
 
 
-def park(run_dir, evidence, name):
+def share_done(run_dir):
+    """How much of its steps the run has made (0 when unknown)."""
+    try:
+        with open(os.path.join(run_dir, "knobs.json")) as f:
+            knobs = json.load(f)
+        return (last_step(run_dir) or 0) / end_step(knobs)
+    except (OSError, ValueError, KeyError, ZeroDivisionError):
+        return 0.0
+
+
+def park(run_dir, evidence, name, min_share=MIN_PARKED_SHARE):
     """Packs a run cut short into evidence/parked/<name>.tar.xz; returns the archive's path,
-    or None when the run has no restart file (or no checkpoint beside it) to continue from."""
+    or None when the run has no restart file (or no checkpoint beside it) to continue from,
+    or has made less than min_share of its steps."""
+    if share_done(run_dir) < min_share:
+        return None
     for restart in restart_files(run_dir):
         checkpoints = checkpoint_files(run_dir, restart)
         if checkpoints:

@@ -105,8 +105,11 @@ def park_cut_short(out, evidence, runs, study, size):
             print(f"  {name}: kept in {evidence}", flush=True)
         elif ensemble.run_state(run_dir)[0] == "incomplete":
             archive = committed_runs.park(run_dir, evidence, name)
-            print(f"  {name}: " + (f"parked in {archive} ({os.path.getsize(archive) / 1e6:.1f} MB)"
-                                   if archive else "no restart file yet: not parked"), flush=True)
+            share = committed_runs.share_done(run_dir)
+            print(f"  {name}: " + (f"parked in {archive} ({os.path.getsize(archive) / 1e6:.1f} MB)" if archive
+                                   else f"not parked ({share:.0%} done; parked from "
+                                        f"{committed_runs.MIN_PARKED_SHARE:.0%} with a restart file)"),
+                  flush=True)
     committed_runs.write_summary(evidence, study, size, [name for name, _ in runs])
     print(f"run_study: commit {evidence} to keep the study's state in the repository", flush=True)
 

@@ -711,7 +711,9 @@ class CommittedRuns(unittest.TestCase):
         with tempfile.TemporaryDirectory() as tmp:
             run, evidence = os.path.join(tmp, "here", "run0"), os.path.join(tmp, "evidence")
             files = self.cut_short_run(run)
-            archive = committed_runs.park(run, evidence, "run0")
+            # write_run's knobs give no length: as far as the runner can tell, nothing is done
+            self.assertIsNone(committed_runs.park(run, evidence, "run0"))
+            archive = committed_runs.park(run, evidence, "run0", min_share=0.0)
             self.assertEqual(archive, committed_runs.parked_archive(evidence, "run0"))
             committed_runs.write_summary(evidence, "porelength", "paper", ["run0", "run1"])
             with open(os.path.join(evidence, "summary.txt")) as f:
@@ -735,6 +737,19 @@ class CommittedRuns(unittest.TestCase):
             self.assertEqual(committed_runs.committed_state(evidence, "run0"), "done")
             self.assertFalse(os.path.exists(os.path.join(evidence, committed_runs.PARKED)))
 
+    def test_a_run_is_parked_from_a_quarter_of_its_steps(self):
+        import committed_runs
+        with tempfile.TemporaryDirectory() as tmp:
+            run, evidence = os.path.join(tmp, "run0"), os.path.join(tmp, "evidence")
+            self.cut_short_run(run)
+            with open(os.path.join(run, "knobs.json"), "w") as f:
+                json.dump(dict(steps="7000", warmup="1000"), f)  # 8000 steps in all
+            for last, parked in ((1000, False), (2000, True)):
+                with open(os.path.join(run, "log.liggghts"), "a") as f:
+                    f.write(f"{last} 3 0.5 0.1\n")
+                self.assertAlmostEqual(committed_runs.share_done(run), last / 8000)
+                self.assertEqual(committed_runs.park(run, evidence, "run0") is not None, parked, last)
+
     def test_a_run_without_a_checkpoint_is_not_parked(self):
         import committed_runs
         with tempfile.TemporaryDirectory() as tmp:
@@ -742,7 +757,7 @@ class CommittedRuns(unittest.TestCase):
             os.makedirs(run)
             with open(os.path.join(run, "restart.a"), "wb") as f:
                 f.write(b"pore.fluid.2000\x00")  # its checkpoint was never written
-            self.assertIsNone(committed_runs.park(run, os.path.join(tmp, "evidence"), "run0"))
+            self.assertIsNone(committed_runs.park(run, os.path.join(tmp, "evidence"), "run0", min_share=0.0))
             self.assertFalse(committed_runs.keep_settled(run, os.path.join(tmp, "evidence"), "run0"))
 
 
