@@ -253,12 +253,19 @@ def describe_machine(build_dir):
 def block(name, figures, date, machine):
     lines = [f"<!-- performance:{name}:begin (written by tools/update_performance.py) -->",
              f"`{command_of(name)}`: measured {date} on {machine}.", "",
-             "| figure | value | unit | goal | note |", "|---|---|---|---|---|"]
+             "| figure | value [min, max of the rounds] | unit | goal | note |", "|---|---|---|---|---|"]
     known = BENCHMARKS[name][0]
     names = [n for n, _ in known] + [n for n in figures if n not in dict(known)]
     units = dict(known)
+    # A figure's spread (<figure>_min, <figure>_max) goes into its own row.
+    spread = {n for n in names if n.endswith(("_min", "_max")) and n[:-4] in names}
     for n in names:
+        if n in spread:
+            continue
         value, unit, note = figures.get(n, ("—", units.get(n, ""), ""))
+        low, high = (figures.get(n + m, ("—",))[0] for m in ("_min", "_max"))
+        if n + "_min" in spread and (low, high) != ("—", "—"):
+            value = f"{value} [{low}, {high}]"
         note = note.strip("() ")
         if note.startswith("goal"):
             note = ""  # the goal column says it
