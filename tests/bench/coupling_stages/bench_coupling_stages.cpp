@@ -11,9 +11,12 @@
 // of --steps steps each with their spread, and a checksum of the populations at the end:
 // the same checksum from two builds means the same bits.
 //
-//   bench_coupling_stages [--steps N] [--repeat N] [--spheres N] [--gather-moments]
+//   bench_coupling_stages [--steps N] [--repeat N] [--spheres N] [--evict-mb N] [--gather-moments]
 // (--gather-moments: the moving walls gather the moments from the populations instead of
-// reading the field the kernel keeps, SphereCouplingOptions::kernel_moments)
+// reading the field the kernel keeps, SphereCouplingOptions::kernel_moments; --evict-mb N:
+// N MiB of other data are written between two fluid steps, outside the timed stages, as the
+// DEM substeps of a full run do, so that each step starts with the lattice out of the
+// caches: 0, the default, keeps the caches of the last step)
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -86,7 +89,7 @@ double median(std::vector<double> v) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  int steps = 500, repeat = 5, spheres = 40;
+  int steps = 500, repeat = 5, spheres = 40, evict_mb = 0;
   bool kernel_moments = true;
   for (int i = 1; i < argc; i += 2) {
     const std::string key = argv[i];
@@ -103,13 +106,14 @@ int main(int argc, char** argv) {
     if (key == "--steps") steps = value;
     else if (key == "--repeat") repeat = value;
     else if (key == "--spheres") spheres = value;
+    else if (key == "--evict-mb") evict_mb = value;
     else {
-      std::fprintf(stderr, "bench_coupling_stages: unknown option %s (--steps, --repeat, --spheres)\n", argv[i]);
+      std::fprintf(stderr, "bench_coupling_stages: unknown option %s (--steps, --repeat, --spheres, --evict-mb)\n", argv[i]);
       return 2;
     }
   }
-  if (steps < 1 || repeat < 1 || spheres < 1) {
-    std::fprintf(stderr, "bench_coupling_stages: --steps, --repeat and --spheres must be >= 1\n");
+  if (steps < 1 || repeat < 1 || spheres < 1 || evict_mb < 0) {
+    std::fprintf(stderr, "bench_coupling_stages: --steps, --repeat and --spheres must be >= 1, --evict-mb >= 0\n");
     return 2;
   }
   const std::array<int, 3> dims{45, 40, 40};
@@ -119,7 +123,15 @@ int main(int argc, char** argv) {
   coupling::SphereCouplingOptions options;
   options.kernel_moments = kernel_moments;
   coupling::SphereCoupling coupling(*solver, options);
+  std::vector<char> other_data(std::size_t(evict_mb) << 20);
+  double evicting = 0.0;  // seconds spent writing other_data, taken off the step's time
   const auto advance = [&] {
+    if (!other_data.empty()) {
+      const double start = coupling::clock_seconds();
+      // A read and a write of every line (memset may bypass the caches on large sizes).
+      for (std::size_t i = 0; i < other_data.size(); i += 64) ++other_data[i];
+      evicting += coupling::clock_seconds() - start;
+    }
     for (std::size_t p = 0; p < particles.size(); ++p) {
       coupling::Vec3 x = particles.view().x(p);
       const coupling::Vec3 v = particles.view().v(p);
@@ -133,9 +145,10 @@ int main(int argc, char** argv) {
   for (int r = 0; r < repeat; ++r) {
     const coupling::StageTimes before = coupling.times();
     const coupling::LinkCounts links_before = coupling.link_counts();
+    const double evicted_before = evicting;
     const double start = coupling::clock_seconds();
     for (int s = 0; s < steps; ++s) advance();
-    const double elapsed = coupling::clock_seconds() - start;
+    const double elapsed = coupling::clock_seconds() - start - (evicting - evicted_before);
     const coupling::StageTimes& t = coupling.times();
     const double per = 1e3 / steps;
     Round round;
@@ -155,8 +168,8 @@ int main(int argc, char** argv) {
     std::printf("BENCH coupling_stages_%s %.4g %s\n", name, median(v), unit);
     return median(v);
   };
-  std::printf("bench_coupling_stages: %d x %d x %d lattice, %zu spheres, %d rounds of %d steps\n", dims[0],
-              dims[1], dims[2], particles.size(), repeat, steps);
+  std::printf("bench_coupling_stages: %d x %d x %d lattice, %zu spheres, %d rounds of %d steps, %d MiB written between steps\n",
+              dims[0], dims[1], dims[2], particles.size(), repeat, steps, evict_mb);
   figure("fluid_step_ms", &Round::step_ms, "ms");
   figure("mapping_ms", &Round::mapping, "ms");
   figure("refill_ms", &Round::refill, "ms");
