@@ -117,13 +117,13 @@ void fill_fluid_mask(const std::uint8_t* __restrict type, const Run& run, int st
 
 // kIncompressible: He & Luo's equilibrium, the momentum rho0 u and rho only in the zeroth
 // order (a compile-time choice, so the standard kernel's arithmetic is untouched).
-// kMoments: the outputs' moments into moments[0..3] (CollideStreamArgs::moments).
+// kMoments: the outputs' moments into moments, four per cell (CollideStreamArgs::moments).
 template <int kChunk, bool kForce, bool kIncompressible, bool kMoments>
 void collide_stream_run(const Real* const* src, Real* const* dst,
                         const std::uint8_t* __restrict type, const Run& run,
                         const std::ptrdiff_t* off, double omega_plus,
                         double omega_minus, double fx, double fy, double fz, double rho0,
-                        double* const* moments) {
+                        double* moments) {
   constexpr bool streaming = kChunk == kChunkStreaming;
   using Out = std::conditional_t<streaming, double, Real>;
   const double source_even = 1.0 - 0.5 * omega_plus;
@@ -221,10 +221,11 @@ void collide_stream_run(const Real* const* src, Real* const* dst,
           }
         }
         m_rho += 1.0 - fluid;  // exact for fluid nodes (+0), 1 elsewhere
-        moments[0][first + std::size_t(i)] = m_rho;
-        moments[1][first + std::size_t(i)] = (m_j[0] - 0.5 * fx) / m_rho;
-        moments[2][first + std::size_t(i)] = (m_j[1] - 0.5 * fy) / m_rho;
-        moments[3][first + std::size_t(i)] = (m_j[2] - 0.5 * fz) / m_rho;
+        double* const kept = moments + 4 * (first + std::size_t(i));
+        kept[0] = m_rho;
+        kept[1] = (m_j[0] - 0.5 * fx) / m_rho;
+        kept[2] = (m_j[1] - 0.5 * fy) / m_rho;
+        kept[3] = (m_j[2] - 0.5 * fz) / m_rho;
       }
     }
     if constexpr (!streaming) continue;
@@ -274,7 +275,7 @@ bool output_exceeds_cache(std::size_t cells) {
 
 using RunKernel = void (*)(const Real* const*, Real* const*, const std::uint8_t*, const Run&,
                           const std::ptrdiff_t*, double, double, double, double, double, double,
-                          double* const*);
+                          double*);
 
 template <int kChunk, bool kMoments>
 RunKernel run_kernel(bool incompressible, bool forced) {
@@ -303,7 +304,7 @@ void collide_stream(const CollideStreamArgs& a) {
   const bool streaming = a.stores == Stores::kStreaming ||
                          (a.stores == Stores::kByCacheSize && !a.in_place && output_exceeds_cache(n));
   // The run kernel of the options, chosen once (no option is looked up per cell).
-  const bool moments = a.moments[0] && a.moments[1] && a.moments[2] && a.moments[3];
+  const bool moments = a.moments != nullptr;
   const auto run = streaming ? run_kernel<kChunkStreaming>(a.incompressible, forced, moments)
                              : run_kernel<kChunkPlain>(a.incompressible, forced, moments);
   const int nx = g.size(0), ny = g.size(1), nz = g.size(2);
@@ -318,7 +319,7 @@ void collide_stream(const CollideStreamArgs& a) {
         const KernelSpan& span = a.spans[i];
         const Run r{span.first, span.length, g.padded(0), nx, g.coords(span.first)[0]};
         run(a.src.data(), a.dst.data(), a.node_type, r, off, a.omega_plus, a.omega_minus,
-            a.force[0], a.force[1], a.force[2], a.rho0, a.moments.data());
+            a.force[0], a.force[1], a.force[2], a.rho0, a.moments);
       }
       detail::streaming_store_fence();
     }
@@ -341,7 +342,7 @@ void collide_stream(const CollideStreamArgs& a) {
         if (j0 == j1) continue;
         const Run r{g.cell(0, j0, k), (j1 - j0 - 1) * g.padded(0) + nx, g.padded(0), nx, 0};
         run(a.src.data(), a.dst.data(), a.node_type, r, off, a.omega_plus, a.omega_minus,
-            a.force[0], a.force[1], a.force[2], a.rho0, a.moments.data());
+            a.force[0], a.force[1], a.force[2], a.rho0, a.moments);
       }
     // Before the region's closing barrier: every thread's runs are in memory after it.
     detail::streaming_store_fence();

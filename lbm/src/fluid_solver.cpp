@@ -307,8 +307,7 @@ void FluidSolver::collide_stream() {
   args.force = parameters_.body_force;
   args.incompressible = parameters_.incompressible;
   args.rho0 = parameters_.rho0;
-  if (keep_node_moments_)
-    for (int m = 0; m < 4; ++m) args.moments[std::size_t(m)] = node_moments_[std::size_t(m)].data();
+  if (keep_node_moments_) args.moments = node_moments_.data();
   lbm::collide_stream(args);
   f_.set_placement(next);
   ++time_step_;
@@ -318,14 +317,19 @@ void FluidSolver::collide_stream() {
 void FluidSolver::keep_node_moments() {
   if (keep_node_moments_) return;
   keep_node_moments_ = true;
-  for (std::vector<double>& m : node_moments_) m.assign(layout_.num_cells(), 0.0);
+  node_moments_.assign(layout_.num_cells());
 }
 
 void FluidSolver::refresh_node_moments(std::size_t cell) {
   if (!keep_node_moments_) return;
   const NodeMoments m = node_moments(f_, cell, parameters_.body_force);
-  node_moments_[0][cell] = m.rho;
-  for (int a = 0; a < 3; ++a) node_moments_[std::size_t(1 + a)][cell] = m.u[std::size_t(a)];
+  double* const kept = node_moments_.at(cell);
+  kept[0] = m.rho;
+  for (int a = 0; a < 3; ++a) kept[1 + a] = m.u[std::size_t(a)];
+}
+
+void FluidSolver::exchange_ghost_node_moments(const std::array<bool, 3>& axes) {
+  halo_->exchange_interleaved(node_moments_.data(), NodeMomentField::kValues, axes);
 }
 
 void FluidSolver::step() {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <string>
+#include <type_traits>
 
 #include "lbm/d3q19.h"
 #include "lbm/input_error.h"
@@ -136,8 +137,9 @@ void HaloExchange::check_neighbours() const {
 // `up` are the arrays whose values travel upward along `axis` (the highest owned plane to
 // the low ghost plane of the block above), `down` those travelling downward; for the
 // populations they are the five crossing each face into the receiving block, or all 19.
-template <class T>
-void HaloExchange::sweep(int axis, T* const* up, int num_up, T* const* down, int num_down) {
+template <class Array>
+void HaloExchange::sweep(int axis, const Array* up, int num_up, const Array* down, int num_down) {
+  using T = std::remove_reference_t<decltype(up[0][0])>;
   const Decomposition& d = decomposition_;
   const int n = layout_.size(axis);
   const int self = d.comm.rank();
@@ -154,11 +156,11 @@ void HaloExchange::sweep(int axis, T* const* up, int num_up, T* const* down, int
 #pragma omp parallel for schedule(static) if (split)
     for (int m = 0; m < num_up + num_down; ++m) {
       if (m < num_up) {
-        T* f = up[m];
+        const Array f = up[m];
         for_plane(layout_, axis, -1,
                   [&](std::size_t, std::size_t ghost) { f[ghost] = f[ghost + shift]; });
       } else {
-        T* f = down[m - num_up];
+        const Array f = down[m - num_up];
         for_plane(layout_, axis, n,
                   [&](std::size_t, std::size_t ghost) { f[ghost] = f[ghost - shift]; });
       }
@@ -175,13 +177,13 @@ void HaloExchange::sweep(int axis, T* const* up, int num_up, T* const* down, int
   // side has no neighbour goes to MPI_PROC_NULL, so it is not packed.
   if (lo >= 0)
     for (int m = 0; m < num_down; ++m) {
-      const T* f = down[m];
+      const Array f = down[m];
       double* low = send_low_.data() + m * plane;
       for_plane(layout_, axis, 0, [&](std::size_t i, std::size_t cell) { low[i] = double(f[cell]); });
     }
   if (hi >= 0)
     for (int m = 0; m < num_up; ++m) {
-      const T* f = up[m];
+      const Array f = up[m];
       double* high = send_high_.data() + m * plane;
       for_plane(layout_, axis, n - 1,
                 [&](std::size_t i, std::size_t cell) { high[i] = double(f[cell]); });
@@ -195,13 +197,13 @@ void HaloExchange::sweep(int axis, T* const* up, int num_up, T* const* down, int
   // Unpack, leaving ghosts at a non-periodic domain edge (no neighbour) untouched.
   if (lo >= 0)
     for (int m = 0; m < num_up; ++m) {
-      T* f = up[m];
+      const Array f = up[m];
       const double* low = recv_low_.data() + m * plane;
       for_plane(layout_, axis, -1, [&](std::size_t i, std::size_t cell) { f[cell] = T(low[i]); });
     }
   if (hi >= 0)
     for (int m = 0; m < num_down; ++m) {
-      T* f = down[m];
+      const Array f = down[m];
       const double* high = recv_high_.data() + m * plane;
       for_plane(layout_, axis, n, [&](std::size_t i, std::size_t cell) { f[cell] = T(high[i]); });
     }
@@ -263,6 +265,23 @@ void HaloExchange::exchange_scalars(double* const* fields, int count, const std:
   if (count > D3Q19::Q) throw InputError("halo exchange: more than 19 fields in one exchange");
   for (int axis = 0; axis < 3; ++axis)
     if (axes[axis]) sweep(axis, fields, count, fields, count);
+}
+
+namespace {
+// Value k of every cell of an interleaved field, indexed by cell like an array.
+struct Interleaved {
+  double* first;  // value k of cell 0
+  std::ptrdiff_t width;
+  double& operator[](std::size_t cell) const { return first[width * std::ptrdiff_t(cell)]; }
+};
+}  // namespace
+
+void HaloExchange::exchange_interleaved(double* values, int width, const std::array<bool, 3>& axes) {
+  if (width > D3Q19::Q) throw InputError("halo exchange: more than 19 values per cell in one exchange");
+  Interleaved fields[D3Q19::Q];
+  for (int k = 0; k < width; ++k) fields[k] = {values + k, width};
+  for (int axis = 0; axis < 3; ++axis)
+    if (axes[axis]) sweep(axis, fields, width, fields, width);
 }
 
 bool HaloExchange::exchanges_face(int axis, int side) const {

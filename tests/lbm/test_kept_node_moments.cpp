@@ -50,9 +50,9 @@ void expect_field_is_node_moments(const lbm::FluidSolver& solver) {
         const std::size_t cell = g.cell(i, j, k);
         if (solver.node_types()[cell] != lbm::kFluid) continue;
         const lbm::NodeMoments m = lbm::node_moments(solver.populations(), cell, solver.parameters().body_force);
-        ASSERT_TRUE(same_bits((*field)[0][cell], m.rho)) << "rho at " << i << " " << j << " " << k;
+        ASSERT_TRUE(same_bits(field->at(cell)[0], m.rho)) << "rho at " << i << " " << j << " " << k;
         for (int a = 0; a < 3; ++a)
-          ASSERT_TRUE(same_bits((*field)[std::size_t(1 + a)][cell], m.u[std::size_t(a)]))
+          ASSERT_TRUE(same_bits(field->at(cell)[1 + a], m.u[std::size_t(a)]))
               << "u_" << a << " at " << i << " " << j << " " << k;
         ++checked;
       }

@@ -76,6 +76,31 @@ inline long long scalar_mismatches(const std::vector<double>& v, const lbm::Deco
   return bad;
 }
 
+// An interleaved field of `width` values per cell (HaloExchange::exchange_interleaved, the
+// node moments' field): value k of an owned cell holds pattern(k, g), ghosts the sentinel.
+// After the exchange along every axis each value must be what exchange() gives population
+// k; an exchange along no axis must change nothing. Counts the values that differ.
+inline long long interleaved_mismatches(lbm::HaloExchange& halo, const lbm::Decomposition& d,
+                                        const lbm::BlockLayout& layout, int width) {
+  std::vector<double> v(layout.num_cells() * std::size_t(width), kSentinel);
+  for (int k = 0; k < layout.size(2); ++k)
+    for (int j = 0; j < layout.size(1); ++j)
+      for (int i = 0; i < layout.size(0); ++i)
+        for (int m = 0; m < width; ++m)
+          v[layout.cell(i, j, k) * std::size_t(width) + std::size_t(m)] = pattern(m, layout.to_global(i, j, k));
+  const std::vector<double> before = v;
+  long long bad = 0;
+  halo.exchange_interleaved(v.data(), width, {false, false, false});
+  bad += v == before ? 0 : 1;
+  halo.exchange_interleaved(v.data(), width, {true, true, true});
+  for (int k = -1; k <= layout.size(2); ++k)
+    for (int j = -1; j <= layout.size(1); ++j)
+      for (int i = -1; i <= layout.size(0); ++i)
+        for (int m = 0; m < width; ++m)
+          if (v[layout.cell(i, j, k) * std::size_t(width) + std::size_t(m)] != expected(m, d, layout, i, j, k)) ++bad;
+  return bad;
+}
+
 // The refill's exchange (FluidSolver::exchange_ghost_densities): the density of every cell
 // in halo.sent_cells(), carried by exchange_scalar(), must equal at every ghost
 // is_exchanged_ghost() names the density of the populations exchange() puts there, and

@@ -41,6 +41,7 @@ void check_exchange(const lbm::Decomposition& d) {
   std::vector<double> s = scalar_field(layout);
   halo.exchange_scalar(s);
   EXPECT_EQ(scalar_mismatches(s, d, layout), 0) << "rank " << d.comm.rank();
+  EXPECT_EQ(interleaved_mismatches(halo, d, layout, 4), 0) << "rank " << d.comm.rank();
 }
 
 TEST(GridOnTwoRanks, CutsTileTheGlobalBoxWithTheRightNeighbours) {

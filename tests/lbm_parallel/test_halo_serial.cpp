@@ -49,6 +49,7 @@ TEST_P(SerialHalo, GhostsHoldPeriodicImagesOrStayUntouched) {
   std::vector<double> s = scalar_field(layout);
   halo.exchange_scalar(s);
   EXPECT_EQ(scalar_mismatches(s, d, layout), 0);
+  EXPECT_EQ(interleaved_mismatches(halo, d, layout, 4), 0);
 }
 
 // The five crossing populations per face give every owned node the values it pulls with

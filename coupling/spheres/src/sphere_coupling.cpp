@@ -74,9 +74,7 @@ void SphereCoupling::exchange_halo() {
   if (!ghost_moments_fresh_) return;
   if (solver_.node_moment_field()) {
     // The sent planes hold the moments the kernel kept: carried as they are, no gather.
-    auto& field = solver_.node_moment_storage();
-    double* fields[4] = {field[0].data(), field[1].data(), field[2].data(), field[3].data()};
-    solver_.exchange_ghost_fields(fields, 4, ghost_moment_axes_);
+    solver_.exchange_ghost_node_moments(ghost_moment_axes_);
     return;
   }
   if (ghost_moments_near_spheres_)
@@ -98,7 +96,7 @@ void SphereCoupling::apply_moving_walls_and_force(const ParticleView& view) {
   // The kernel's moments, where its ghosts hold what links read: this step's own exchange
   // carried them there, or no link reads a ghost's moments (whole_ghost_axes).
   const bool any_axis = ghost_moment_axes_[0] || ghost_moment_axes_[1] || ghost_moment_axes_[2];
-  const std::array<std::vector<double>, 4>* field =
+  const lbm::NodeMomentField* field =
       (own_exchange_ || !any_axis) ? solver_.node_moment_field() : nullptr;
   ghost_moments_fresh_ = false;
   own_exchange_ = false;

@@ -44,12 +44,13 @@ struct CollideStreamArgs {
   // out; where null, every owned cell.
   const KernelSpan* spans = nullptr;
   std::size_t num_spans = 0;
-  // Where non-null (all four), the moments of every computed node's output, written at its
-  // cell while the kernel holds the values: rho and u with the half force removed, exactly
-  // (bit for bit) lbm::node_moments of the stored populations, so that the moving walls of
-  // the next step read four values per node instead of gathering 19 populations from 19
-  // arrays. Non-fluid nodes get rho = 1 and u = -F/2.
-  std::array<double*, 4> moments{};
+  // Where non-null, the moments of every computed node's output, written while the kernel
+  // holds the values, the four of cell c at moments[4 c] (NodeMomentField): rho and u with
+  // the half force removed, exactly (bit for bit) lbm::node_moments of the stored
+  // populations, so that the moving walls of the next step read four values per node
+  // instead of gathering 19 populations from 19 arrays. Non-fluid nodes get rho = 1 and
+  // u = -F/2.
+  double* moments = nullptr;
 };
 
 // Pull stream + TRT collision (Guo forcing split into its even and odd parts) on every

@@ -10,6 +10,7 @@
 #include "lbm/collide_stream.h"
 #include "lbm/decomposition.h"
 #include "lbm/halo_populations.h"
+#include "lbm/node_moment_field.h"
 #include "lbm/node_type.h"
 #include "lbm/open_boundary.h"
 #include "lbm/population_field.h"
@@ -147,14 +148,17 @@ class FluidSolver {
   // and again after anything else rewrote the populations wholesale (initialise_equilibrium,
   // a checkpoint's set_time_step); a host that rewrites a node's populations between steps
   // calls refresh_node_moments(cell) (the refill of uncovered nodes) or
-  // invalidate_node_moments(). The field's ghost cells hold whatever the kernel or a host's
-  // exchange left there (FluidSolver::exchange_ghost_fields carries it).
+  // invalidate_node_moments(). The field's ghost cells hold whatever the kernel or
+  // exchange_ghost_node_moments left there.
   void keep_node_moments();
-  const std::array<std::vector<double>, 4>* node_moment_field() const {
+  const NodeMomentField* node_moment_field() const {
     return node_moments_valid_ ? &node_moments_ : nullptr;
   }
-  std::array<std::vector<double>, 4>& node_moment_storage() { return node_moments_; }
   void refresh_node_moments(std::size_t cell);
+  // The moments the kernel kept on the sent planes of the axes marked in `axes`, carried to
+  // the ghosts as exchange_ghost_fields carries a field (edge ghosts when both their axes
+  // are marked); the ghosts of the other axes keep what they held. Collective.
+  void exchange_ghost_node_moments(const std::array<bool, 3>& axes);
   void invalidate_node_moments() { node_moments_valid_ = false; }
 
   // Macroscopic values at a local cell, from the stored post-collision populations:
@@ -207,7 +211,7 @@ class FluidSolver {
   std::size_t updated_cells_ = 0;
   std::unique_ptr<HaloExchange> halo_;
   long long time_step_ = 0;
-  std::array<std::vector<double>, 4> node_moments_;  // keep_node_moments()
+  NodeMomentField node_moments_;  // keep_node_moments()
   bool keep_node_moments_ = false, node_moments_valid_ = false;
 };
 

@@ -65,6 +65,9 @@ class HaloExchange {
   // The same for `count` fields of num_cells() doubles at once, swept only along the axes
   // marked in `axes`, in x, y, z order: the ghosts of the other axes keep what they held.
   void exchange_scalars(double* const* fields, int count, const std::array<bool, 3>& axes);
+  // The same for one field of `width` doubles per cell side by side, value k of cell c at
+  // values[width c + k] (NodeMomentField), carried in place as `width` fields would be.
+  void exchange_interleaved(double* values, int width, const std::array<bool, 3>& axes);
   // The cells of the padded planes that a sweep along `axis` sends (planes 0 and n - 1,
   // where that side has a neighbour), and those it fills (the ghost planes -1 and n).
   const std::vector<std::size_t>& sent_planes(int axis) const { return sent_planes_[axis]; }
@@ -88,10 +91,11 @@ class HaloExchange {
   const std::vector<std::size_t>& sent_cells() const { return sent_cells_; }
 
  private:
-  // One sweep along `axis` over `components` arrays of num_cells() values each.
-  // One sweep along `axis`: num_up arrays of num_cells() values each travel up, num_down down.
-  template <class T>
-  void sweep(int axis, T* const* up, int num_up, T* const* down, int num_down);
+  // One sweep along `axis`: num_up arrays of num_cells() values each travel up, num_down
+  // down. An array is a pointer, value of cell c at [c], or anything indexed the same way
+  // (the interleaved fields' Interleaved, halo_exchange.cpp).
+  template <class Array>
+  void sweep(int axis, const Array* up, int num_up, const Array* down, int num_down);
   void check_neighbours() const;
   void collect_sent_cells();
   void collect_crossing();

@@ -13,8 +13,8 @@ double MeiLuoShyy::returning_population(const BoundaryLink& link, std::ptrdiff_t
 
 NodeMoments MeiLuoShyy::node_state(const PopulationField& f, std::size_t x) const {
   if (field) {
-    const auto& m = *field;
-    return NodeMoments{m[0][x], {m[1][x], m[2][x], m[3][x]}};
+    const double* const m = field->at(x);
+    return NodeMoments{m[0], {m[1], m[2], m[3]}};
   }
   return cache->moments(f, x, body_force, table);
 }
@@ -38,7 +38,7 @@ double MeiLuoShyy::returning_population(const BoundaryLink& link, std::ptrdiff_t
   } else {
     const std::size_t xff = x - offset;
     u_bf = (*node_type)[xff] != kFluid ? u_f
-           : field ? Vec3{(*field)[1][xff], (*field)[2][xff], (*field)[3][xff]}
+           : field ? Vec3{field->at(xff)[1], field->at(xff)[2], field->at(xff)[3]}
                    : cache->moments(f, xff, body_force, table).u;
     chi = (2.0 * delta - 1.0) / (tau - 2.0);
   }

@@ -21,6 +21,7 @@
 #include "lbm/moving_wall/link_boundary.h"
 #include "lbm/moving_wall/link_mass.h"
 #include "lbm/moving_wall/moment_cache.h"
+#include "lbm/node_moment_field.h"
 
 namespace lbm {
 class FluidSolver;
@@ -78,6 +79,6 @@ LinkMassDefect apply_links_and_restore_mass(const std::vector<BoundaryLink>& lin
                                             std::vector<LinkPopulations>& populations,
                                             std::vector<double>& per_link,
                                             const GhostMoments* ghosts = nullptr,
-                                            const std::array<std::vector<double>, 4>* field = nullptr);
+                                            const NodeMomentField* field = nullptr);
 
 }  // namespace lbm::moving_wall

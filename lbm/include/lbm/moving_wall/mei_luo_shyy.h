@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "lbm/moving_wall/link_boundary.h"
+#include "lbm/node_moment_field.h"
 #include "lbm/moving_wall/moment_cache.h"
 #include "lbm/moving_wall/moving_wall_scheme.h"
 
@@ -31,7 +32,7 @@ struct MeiLuoShyy {
   // Where non-null, the moments of every node that a link reads, read from here instead
   // of the cache: the solver's node_moment_field (FluidSolver::keep_node_moments), with the
   // ghosts' moments received into it.
-  const std::array<std::vector<double>, 4>* field = nullptr;
+  const NodeMomentField* field = nullptr;
 
   double returning_population(const BoundaryLink& link, std::ptrdiff_t offset,
                               const PopulationField& f) const;
