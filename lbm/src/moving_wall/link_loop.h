@@ -95,6 +95,19 @@ double returning_population(const Scheme& scheme, const BoundaryLink& link, std:
     return scheme.returning_population(link, offset, f, state);
 }
 
+// The lines a link reads, asked for this many links before it is applied: the lattice is
+// out of the caches after the DEM substeps, and the links' nodes are too far apart in each
+// of the arrays for the hardware to guess them.
+constexpr std::size_t kPrefetchLinks = 16;
+// The scheme's own lines of a link (Mei-Luo-Shyy: the moments it reads), where it names them.
+template <class Scheme>
+auto prefetch_scheme(const Scheme& scheme, const BoundaryLink& link, std::ptrdiff_t offset, int)
+    -> decltype(scheme.prefetch(link, offset)) {
+  scheme.prefetch(link, offset);
+}
+template <class Scheme>
+void prefetch_scheme(const Scheme&, const BoundaryLink&, std::ptrdiff_t, long) {}
+
 // The links at sorted positions [i, end) of one fluid node x (consecutive, in link order)
 // through the scheme, with x's state read once; their populations and defects recorded
 // under their link ids. Returns the position after the node's last link.
@@ -106,8 +119,15 @@ std::size_t apply_node(const LinkSweep& order, std::size_t i, std::size_t end,
   const BoundaryLink* const link = order.sorted_links();
   const std::uint32_t* const id = order.ids();
   const std::size_t x = link[i].fluid_cell;
+  const std::size_t num_links = order.first(order.num_blocks());
   const auto state = node_state(scheme, f, x, 0);
   do {
+    if (i + kPrefetchLinks < num_links) {
+      const BoundaryLink& ahead = link[i + kPrefetchLinks];
+      __builtin_prefetch(slots.out[ahead.q] + ahead.fluid_cell);
+      __builtin_prefetch(slots.back[ahead.q] + ahead.fluid_cell, 1);
+      prefetch_scheme(scheme, ahead, offsets.of[ahead.q], 0);
+    }
     const BoundaryLink& k = link[i];
     const int q = k.q;
     const double back = returning_population(scheme, k, offsets.of[q], f, state);

@@ -42,6 +42,12 @@ struct MeiLuoShyy {
   NodeMoments node_state(const PopulationField& f, std::size_t x) const;
   double returning_population(const BoundaryLink& link, std::ptrdiff_t offset,
                               const PopulationField& f, const NodeMoments& at_x) const;
+  // Asks for the moments the link will read (the field's, where it has one).
+  void prefetch(const BoundaryLink& link, std::ptrdiff_t offset) const {
+    if (!field) return;
+    __builtin_prefetch(field->at(link.fluid_cell));
+    if (link.fraction < 0.5) __builtin_prefetch(field->at(link.fluid_cell - offset));
+  }
 };
 
 // The copy of `scheme` that thread t of moving_wall::apply runs: its own cache table.
