@@ -308,6 +308,8 @@ void FluidSolver::collide_stream() {
   args.incompressible = parameters_.incompressible;
   args.rho0 = parameters_.rho0;
   if (keep_node_moments_) args.moments = node_moments_.data();
+  if (pull_correction_armed_) args.pull_correction = pull_correction_.data();
+  pull_correction_armed_ = false;
   lbm::collide_stream(args);
   f_.set_placement(next);
   ++time_step_;
@@ -318,6 +320,12 @@ void FluidSolver::keep_node_moments() {
   if (keep_node_moments_) return;
   keep_node_moments_ = true;
   node_moments_.assign(layout_.num_cells());
+}
+
+double* FluidSolver::pull_correction_for_next_step() {
+  if (pull_correction_.size() != layout_.num_cells()) pull_correction_.assign(layout_.num_cells(), 0.0);
+  pull_correction_armed_ = true;
+  return pull_correction_.data();
 }
 
 void FluidSolver::refresh_node_moments(std::size_t cell) {

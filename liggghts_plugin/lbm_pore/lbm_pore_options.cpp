@@ -161,7 +161,11 @@ PoreOptions parse_pore_options(const std::vector<std::string>& args) {
       if (o.boundary != "bounce_back" && o.boundary != "bouzidi" && o.boundary != "mls")
         fail("keyword 'boundary' = '" + o.boundary + "': must be bounce_back, bouzidi or mls");
     } else if (key == "mass_correction") {
-      o.mass_correction = words.yes_no(key);
+      const std::string v = words.text(key);
+      if (v != "yes" && v != "on" && v != "no" && v != "off" && v != "kernel")
+        fail("keyword 'mass_correction' = '" + v + "': must be yes, no or kernel");
+      o.mass_correction = v != "no" && v != "off";
+      o.mass_correction_in_kernel = v == "kernel";
     } else if (key == "reference_pressure") {
       const std::string v = words.text(key);
       if (v != "remove" && v != "keep")

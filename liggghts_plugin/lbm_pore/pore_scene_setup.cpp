@@ -201,6 +201,7 @@ coupling::SphereCouplingOptions coupling_options(const PoreOptions& o) {
   coupling::SphereCouplingOptions co;
   co.wall_scheme = lbm::moving_wall::parse(o.boundary);
   co.conserve_link_mass = o.mass_correction;
+  co.correct_mass_in_kernel = o.mass_correction_in_kernel;
   co.reference_pressure =
       o.keep_reference_pressure ? coupling::ReferencePressure::kKept : coupling::ReferencePressure::kRemoved;
   return co;
@@ -291,7 +292,8 @@ std::string setup_summary(const PoreOptions& o, const coupling::UnitConversion& 
                        "fix lbm/pore: pressure loss %g = %.4g lattice (density difference %.3g)\n", o.drive_value,
                        drive.pressure_loss, 3.0 * drive.pressure_loss);
   n += std::snprintf(text + n, sizeof text - n, "fix lbm/pore: moving walls %s (mass correction %s), lubrication %s (cutoff %g cells)\n",
-                     o.boundary.c_str(), o.mass_correction ? "on" : "off", o.lubrication ? "on" : "off", o.lubrication_cutoff);
+                     o.boundary.c_str(),
+                     !o.mass_correction ? "off" : o.mass_correction_in_kernel ? "in the kernel" : "on", o.lubrication ? "on" : "off", o.lubrication_cutoff);
   if (bytes_per_node > 0.0)
     std::snprintf(text + n, sizeof text - n,
                   "fix lbm/pore: memory %.0f bytes per lattice node (fluid %.0f, particle coupling %.0f)\n",

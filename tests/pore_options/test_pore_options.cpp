@@ -4,6 +4,7 @@
 
 #include "lbm/input_error.h"
 #include "lbm_pore_options.h"
+#include "pore_scene_setup.h"
 #include "split_words.h"
 
 namespace {
@@ -30,6 +31,7 @@ TEST(PoreOptions, PaperSceneWithDefaults) {
   EXPECT_EQ(o.boundary, "mls");
   EXPECT_TRUE(o.lubrication);
   EXPECT_TRUE(o.mass_correction);
+  EXPECT_FALSE(o.mass_correction_in_kernel);
   EXPECT_FALSE(o.keep_reference_pressure);
   EXPECT_FALSE(o.substep_fraction);
   EXPECT_EQ(o.checkpoint_keep, 0);
@@ -59,6 +61,15 @@ TEST(PoreOptions, AllKeywords) {
   EXPECT_TRUE(o.substep_fraction);
 }
 
+TEST(PoreOptions, MassCorrectionInTheKernel) {
+  const auto o = lbm_pore::parse_pore_options(split("dx 1 mass_correction kernel" + kScene));
+  EXPECT_TRUE(o.mass_correction);
+  EXPECT_TRUE(o.mass_correction_in_kernel);
+  EXPECT_TRUE(lbm_pore::coupling_options(o).correct_mass_in_kernel);
+  EXPECT_FALSE(lbm_pore::coupling_options(lbm_pore::parse_pore_options(split("dx 1" + kScene)))
+                   .correct_mass_in_kernel);
+}
+
 TEST(PoreOptions, BadValuesNameTheKeywordAndRange) {
   EXPECT_NE(error_of("dx -1" + kScene).find("'dx' = '-1': must be a number in (0, inf]"),
             std::string::npos);
@@ -68,6 +79,8 @@ TEST(PoreOptions, BadValuesNameTheKeywordAndRange) {
   EXPECT_NE(error_of("dx 1 boundary curved" + kScene).find("bounce_back, bouzidi or mls"),
             std::string::npos);
   EXPECT_NE(error_of("dx 1 colour red" + kScene).find("unknown keyword 'colour'"), std::string::npos);
+  EXPECT_NE(error_of("dx 1 mass_correction 1" + kScene).find("'mass_correction' = '1': must be yes, no or kernel"),
+            std::string::npos);
   EXPECT_NE(error_of("dx 1 reference_pressure literal" + kScene).find("'reference_pressure' = 'literal': must be 'remove' or 'keep'"),
             std::string::npos);
   EXPECT_NE(error_of("dx 1 substep_force half" + kScene).find("'substep_force' = 'half': must be 'held' or 'fraction'"),

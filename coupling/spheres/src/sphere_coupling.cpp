@@ -110,7 +110,7 @@ void SphereCoupling::apply_moving_walls_and_force(const ParticleView& view) {
       // the force is the scheme's own.
       link_defect_ = lbm::moving_wall::apply_links_and_restore_mass(
           links_.links, options_.wall_scheme, solver_, moment_cache_, link_sweep_,
-          link_populations_, defect_per_link_, ghosts, field);
+          link_populations_, defect_per_link_, ghosts, field, options_.correct_mass_in_kernel);
     } else {
       lbm::apply_links(links_.links, options_.wall_scheme, solver_, &moment_cache_, nullptr,
                        &link_populations_, ghosts);

@@ -161,6 +161,12 @@ class FluidSolver {
   void exchange_ghost_node_moments(const std::array<bool, 3>& axes);
   void invalidate_node_moments() { node_moments_valid_ = false; }
 
+  // The moving walls' link mass correction taken in the next collide_stream's pass
+  // (CollideStreamArgs::pull_correction) instead of in the moving walls' sweep: one value per
+  // cell, all zero, which the caller sets at the nodes it corrects (a density taken off the
+  // populations the node pulls); the next collide_stream takes it off and zeroes it again.
+  double* pull_correction_for_next_step();
+
   // Macroscopic values at a local cell, from the stored post-collision populations:
   // rho = sum f, rho u = sum c f - F/2 (the Guo forcing shift undone).
   double density(std::size_t cell) const;
@@ -213,6 +219,8 @@ class FluidSolver {
   long long time_step_ = 0;
   NodeMomentField node_moments_;  // keep_node_moments()
   bool keep_node_moments_ = false, node_moments_valid_ = false;
+  std::vector<double> pull_correction_;  // pull_correction_for_next_step()
+  bool pull_correction_armed_ = false;
 };
 
 }  // namespace lbm

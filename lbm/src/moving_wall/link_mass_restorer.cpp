@@ -27,8 +27,9 @@ static_assert(kOpen == 3 && kFluid < 3 && kSolid < 3 && kMoving < 3, "maybe_open
 }  // namespace
 
 LinkMassRestorer::LinkMassRestorer(const BlockLayout& layout,
-                                   const std::vector<std::uint8_t>& node_type, PopulationField& f)
-    : rest_(f.q(0)), type_(node_type.data()) {
+                                   const std::vector<std::uint8_t>& node_type, PopulationField& f,
+                                   double* kernel_correction)
+    : rest_(f.q(0)), type_(node_type.data()), kernel_correction_(kernel_correction) {
   // Taken once: through a Real& the field's own pointer and size would be reloaded after
   // every store, 19 times per link.
   for (int p = 0; p < L::Q; ++p) {
@@ -80,6 +81,12 @@ void LinkMassRestorer::remove_node(std::size_t x, const double* defect, const st
                                    const std::uint32_t* last) const {
   if (next_to_open(x)) {
     for (const std::uint32_t* l = first; l != last; ++l) remove_next_to_open(x, defect[*l]);
+    return;
+  }
+  if (kernel_correction_) {
+    double sum = 0.0;
+    for (const std::uint32_t* l = first; l != last; ++l) sum += defect[*l];
+    kernel_correction_[x] = sum;
     return;
   }
   // Each slot takes the links' shares one after the other, as remove() per link would.

@@ -58,13 +58,15 @@ LinkMassDefect apply_links_and_restore_mass(const std::vector<BoundaryLink>& lin
                                             std::vector<LinkPopulations>& populations,
                                             std::vector<double>& per_link,
                                             const GhostMoments* ghosts,
-                                            const NodeMomentField* field) {
+                                            const NodeMomentField* field,
+                                            bool correct_in_kernel) {
   const double rho0 = solver.parameters().rho0;
   const BlockLayout& layout = solver.layout();
   PopulationField& f = solver.populations();
   const int threads = link_threads(links.size());
   order.sort(links, layout);
-  const LinkMassRestorer restorer(layout, solver.node_types(), f);
+  const LinkMassRestorer restorer(layout, solver.node_types(), f,
+                                  correct_in_kernel ? solver.pull_correction_for_next_step() : nullptr);
   switch (scheme) {
     case MovingWallScheme::kBounceBack:
       sweep(links, order, BounceBack{rho0}, layout, rho0, restorer, f, populations, per_link, threads);

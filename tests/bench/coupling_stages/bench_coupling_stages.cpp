@@ -12,8 +12,11 @@
 // the same checksum from two builds means the same bits.
 //
 //   bench_coupling_stages [--steps N] [--repeat N] [--spheres N] [--evict-mb N] [--gather-moments]
+//                         [--correct-in-kernel]
 // (--gather-moments: the moving walls gather the moments from the populations instead of
-// reading the field the kernel keeps, SphereCouplingOptions::kernel_moments; --evict-mb N:
+// reading the field the kernel keeps, SphereCouplingOptions::kernel_moments;
+// --correct-in-kernel: the link mass correction in the kernel's pass,
+// SphereCouplingOptions::correct_mass_in_kernel; --evict-mb N:
 // N MiB of other data are written between two fluid steps, outside the timed stages, as the
 // DEM substeps of a full run do, so that each step starts with the lattice out of the
 // caches: 0, the default, keeps the caches of the last step)
@@ -90,11 +93,11 @@ double median(std::vector<double> v) {
 
 int main(int argc, char** argv) {
   int steps = 500, repeat = 5, spheres = 40, evict_mb = 0;
-  bool kernel_moments = true;
+  bool kernel_moments = true, correct_in_kernel = false;
   for (int i = 1; i < argc; i += 2) {
     const std::string key = argv[i];
-    if (key == "--gather-moments") {
-      kernel_moments = false;
+    if (key == "--gather-moments" || key == "--correct-in-kernel") {
+      (key == "--gather-moments" ? kernel_moments : correct_in_kernel) = key == "--correct-in-kernel";
       --i;
       continue;
     }
@@ -122,6 +125,7 @@ int main(int argc, char** argv) {
   coupling::ParticleSet particles = make_spheres(spheres, dims, radius);
   coupling::SphereCouplingOptions options;
   options.kernel_moments = kernel_moments;
+  options.correct_mass_in_kernel = correct_in_kernel;
   coupling::SphereCoupling coupling(*solver, options);
   std::vector<char> other_data(std::size_t(evict_mb) << 20);
   double evicting = 0.0;  // seconds spent writing other_data, taken off the step's time

@@ -64,11 +64,13 @@ double moving_surface_mass(const std::vector<BoundaryLink>& links, double rho0);
 
 // The correction's writes, one link at a time: remove(x, delta_l) takes delta_l w_p from
 // each slot f_p(x - c_p). The arrays' addresses and offsets are taken once, at construction
-// (link_mass_restorer.cpp).
+// (link_mass_restorer.cpp). Where `kernel_correction` is non-null, remove_node leaves the
+// nodes away from the open faces to the collide-stream kernel: their links' defects summed
+// (in link order) into kernel_correction[x] (CollideStreamArgs::pull_correction).
 class LinkMassRestorer {
  public:
   LinkMassRestorer(const BlockLayout& layout, const std::vector<std::uint8_t>& node_type,
-                   PopulationField& f);
+                   PopulationField& f, double* kernel_correction = nullptr);
   void remove(std::size_t fluid_cell, double defect) const;
   // remove(x, defect[*l]) for each link id l in [first, last), all of node x, in that order,
   // with each of the 19 slots read and written once (the same roundings).
@@ -83,6 +85,7 @@ class LinkMassRestorer {
   std::ptrdiff_t row_[4];   // +- e_2, +- e_3: the rows beside x along the first axis
   std::ptrdiff_t edge_[4];  // +- e_2 +- e_3
   const std::uint8_t* type_;
+  double* kernel_correction_;
 
   bool next_to_open(std::size_t fluid_cell) const;
   void remove_next_to_open(std::size_t fluid_cell, double defect) const;

@@ -72,13 +72,18 @@ void sweep(const std::vector<BoundaryLink>& links, const LinkSweep& order, const
 // OpenMP threads by ranges of blocks (sweep in link_loop.h). The same result for any number
 // of threads. Mei-Luo-Shyy reads the moments of the nodes from `field` where non-null (the
 // solver's node_moment_field, whose ghosts every link may read hold their owners' moments),
-// else from `cache`, with `ghosts` (as for apply_links) preset in it.
+// else from `cache`, with `ghosts` (as for apply_links) preset in it. With
+// `correct_in_kernel`, the correction of the nodes away from the open faces is left to the
+// solver's next collide_stream (FluidSolver::pull_correction_for_next_step: the same
+// correction, the defects summed per node first, so equal to round-off), which must come
+// before anything else reads those nodes' populations.
 LinkMassDefect apply_links_and_restore_mass(const std::vector<BoundaryLink>& links,
                                             MovingWallScheme scheme, FluidSolver& solver,
                                             MomentCache& cache, LinkSweep& order,
                                             std::vector<LinkPopulations>& populations,
                                             std::vector<double>& per_link,
                                             const GhostMoments* ghosts = nullptr,
-                                            const NodeMomentField* field = nullptr);
+                                            const NodeMomentField* field = nullptr,
+                                            bool correct_in_kernel = false);
 
 }  // namespace lbm::moving_wall
