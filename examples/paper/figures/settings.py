@@ -23,28 +23,36 @@ def run_figures(run):
             "p_max": max(pressures) if pressures else float("nan")}
 
 
+def compare(groups, labels, reference, other, out_dir, name):
+    """Each quantity of runs grouped by setting (groups[setting][run] = run_figures), drawn per
+    group; the verdict of `other`: its mean within the spread (min to max) of `reference`'s
+    runs or not. Returns the verdicts, the values per group and the plot's path."""
+    fig, axes = plt.subplots(1, len(QUANTITIES), figsize=(11, 3.2))
+    verdicts, table = [], {}
+    for ax, (key, label) in zip(axes, QUANTITIES):
+        values = {g: [r[key] for r in groups[g].values()] for g in labels}
+        table[key] = {str(g): v for g, v in values.items()}
+        for i, g in enumerate(labels):
+            ax.plot([i] * len(values[g]), values[g], "o", alpha=0.7)
+        ax.set_xticks(range(len(labels)))
+        ax.set_xticklabels(list(labels.values()))
+        ax.set_title(label, fontsize=9)
+        if values[reference] and values[other]:
+            low, high = min(values[reference]), max(values[reference])
+            mean = float(np.mean(values[other]))
+            verdicts.append(f"{key}: {labels[other]} mean {mean:.3g} "
+                            f"{'within' if low <= mean <= high else 'outside'} {labels[reference]}'s {low:.3g}-{high:.3g}")
+    return verdicts, table, save(fig, out_dir, name)
+
+
 def analyze(summary, out_dir):
     groups = {100: {}, 20: {}}
     for run in finished_runs(summary):
         n_dem = int(run["knobs"].get("n_dem", 100))
         groups.setdefault(n_dem, {})[run["name"]] = run_figures(run)
-    fig, axes = plt.subplots(1, len(QUANTITIES), figsize=(11, 3.2))
-    verdicts, table = [], {}
-    for ax, (key, label) in zip(axes, QUANTITIES):
-        values = {n: [r[key] for r in groups[n].values()] for n in (100, 20)}
-        table[key] = {str(n): v for n, v in values.items()}
-        for i, n in enumerate((100, 20)):
-            ax.plot([i] * len(values[n]), values[n], "o", alpha=0.7)
-        ax.set_xticks([0, 1])
-        ax.set_xticklabels(["N_DEM 100", "N_DEM 20"])
-        ax.set_title(label, fontsize=9)
-        if values[100] and values[20]:
-            low, high = min(values[100]), max(values[100])
-            agrees = low <= float(np.mean(values[20])) <= high
-            verdicts.append(f"{key}: N_DEM 20 mean {np.mean(values[20]):.3g} "
-                            f"{'within' if agrees else 'outside'} N_DEM 100's {low:.3g}-{high:.3g}")
+    verdicts, table, png = compare(groups, {100: "N_DEM 100", 20: "N_DEM 20"}, 100, 20, out_dir, "settings")
     ours = "; ".join(verdicts) if verdicts else "no pair of finished runs yet"
     return result(summary, "settings", "N_DEM 20 against 100 (bursts, deposits, P_max)",
                   "the paper uses N_DEM 100 for stability and cost; its statistics should not depend on it",
-                  ours, save(fig, out_dir, "settings"), values=table,
+                  ours, png, values=table,
                   runs_per_n_dem={str(n): len(groups[n]) for n in groups})
