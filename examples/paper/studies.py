@@ -337,8 +337,14 @@ def correction(size):
     within the spread of the settings study's N_DEM 100 seeds (figures/correction.py)."""
     lengths = {"tiny": {}, "quick": dict(steps=2000000),
                "paper": dict(steps=20000000 - 200000)}[size]
-    return [(f"seed_{seed}_kernel_correction", _base(size, seed=seed, mass_correction="kernel", **lengths))
-            for seed in _seeds(_counts(size, 1, 2, 3), first=200003)]
+    seeds = _seeds(_counts(size, 1, 2, 3), first=200003)
+    runs = [(f"seed_{seed}_kernel_correction", _base(size, seed=seed, mass_correction="kernel", **lengths))
+            for seed in seeds]
+    # The control: the sweep's correction on the first seed with the lattice split the other
+    # way ("1 * 1"), a change of the last bits alone: how far the statistics of one seed move
+    # when nothing but the rounding changes.
+    control = _base(size, seed=seeds[0], mass_correction="sweep", procs="1 * 1", **lengths)
+    return runs[:2] + [(f"seed_{seeds[0]}_sweep_split_across", control)] + runs[2:]
 
 
 # The model's open points (doc/calibration.md), each as the knobs that switch it from in.pore's

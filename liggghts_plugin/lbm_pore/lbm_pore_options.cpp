@@ -162,8 +162,8 @@ PoreOptions parse_pore_options(const std::vector<std::string>& args) {
         fail("keyword 'boundary' = '" + o.boundary + "': must be bounce_back, bouzidi or mls");
     } else if (key == "mass_correction") {
       const std::string v = words.text(key);
-      if (v != "yes" && v != "on" && v != "no" && v != "off" && v != "kernel")
-        fail("keyword 'mass_correction' = '" + v + "': must be yes, no or kernel");
+      if (v != "yes" && v != "on" && v != "sweep" && v != "kernel" && v != "no" && v != "off")
+        fail("keyword 'mass_correction' = '" + v + "': must be yes, sweep, kernel or no");
       o.mass_correction = v != "no" && v != "off";
       o.mass_correction_in_kernel = v == "kernel";
     } else if (key == "reference_pressure") {

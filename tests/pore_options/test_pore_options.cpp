@@ -68,6 +68,8 @@ TEST(PoreOptions, MassCorrectionInTheKernel) {
   EXPECT_TRUE(lbm_pore::coupling_options(o).correct_mass_in_kernel);
   EXPECT_FALSE(lbm_pore::coupling_options(lbm_pore::parse_pore_options(split("dx 1" + kScene)))
                    .correct_mass_in_kernel);
+  EXPECT_FALSE(lbm_pore::coupling_options(lbm_pore::parse_pore_options(split("dx 1 mass_correction sweep" + kScene)))
+                   .correct_mass_in_kernel);
 }
 
 TEST(PoreOptions, BadValuesNameTheKeywordAndRange) {
@@ -79,7 +81,7 @@ TEST(PoreOptions, BadValuesNameTheKeywordAndRange) {
   EXPECT_NE(error_of("dx 1 boundary curved" + kScene).find("bounce_back, bouzidi or mls"),
             std::string::npos);
   EXPECT_NE(error_of("dx 1 colour red" + kScene).find("unknown keyword 'colour'"), std::string::npos);
-  EXPECT_NE(error_of("dx 1 mass_correction 1" + kScene).find("'mass_correction' = '1': must be yes, no or kernel"),
+  EXPECT_NE(error_of("dx 1 mass_correction 1" + kScene).find("'mass_correction' = '1': must be yes, sweep, kernel or no"),
             std::string::npos);
   EXPECT_NE(error_of("dx 1 reference_pressure literal" + kScene).find("'reference_pressure' = 'literal': must be 'remove' or 'keep'"),
             std::string::npos);
