@@ -6,13 +6,10 @@
 // the same bits on one and two threads.
 #include <gtest/gtest.h>
 
-#ifdef _OPENMP
-#include <omp.h>
-#endif
-
 #include <cmath>
 #include <cstring>
 
+#include "cases/scoped_threads.h"
 #include "cases/serial_flow.h"
 #include "cases/staged_step.h"
 #include "coupling/sphere_coupling.h"
@@ -26,10 +23,7 @@ struct CoupledRun {
 };
 
 CoupledRun run(int steps, bool in_kernel, int threads) {
-#ifdef _OPENMP
-  const int before = omp_get_max_threads();
-  omp_set_num_threads(threads);
-#endif
+  const cases::ScopedThreads scope(cases::ScopedThreads::most(threads));
   CoupledRun r;
   r.solver = cases::make_solver({24, 24, 24}, {true, true, true}, 0.9, {2e-6, 0.0, 1e-6});
   coupling::ParticleSet particles;
@@ -42,21 +36,13 @@ CoupledRun run(int steps, bool in_kernel, int threads) {
   c.map_and_refill(particles.view(true));
   const double m0 = cases::fluid_mass(*r.solver);
   for (int s = 0; s < steps; ++s) {
-    for (std::size_t p = 0; p < particles.size(); ++p) {
-      coupling::Vec3 x = particles.view().x(p);
-      const coupling::Vec3 v = particles.view().v(p);
-      for (int a = 0; a < 3; ++a) x[a] += 8.0 * v[a];  // fast: nodes covered and uncovered
-      particles.set_position(p, x);
-    }
+    cases::advance_particles(particles, 8.0);
     c.step(particles.view(true));
     r.booked += c.last_surface_mass() + c.last_mass_change().refilled - c.last_mass_change().covered;
   }
   r.mass = cases::fluid_mass(*r.solver);
   r.mass_change = r.mass - m0;
   for (std::size_t p = 0; p < particles.size(); ++p) r.force.push_back(c.force(p));
-#ifdef _OPENMP
-  omp_set_num_threads(before);
-#endif
   return r;
 }
 

@@ -38,12 +38,7 @@ CoupledRun run(int steps, bool from_populations) {
   coupling::ParticleSet particles = moving_spheres();
   coupling::SphereCoupling c(*r.solver);
   for (int s = 0; s < steps; ++s) {
-    for (std::size_t p = 0; p < particles.size(); ++p) {
-      coupling::Vec3 x = particles.view().x(p);
-      const coupling::Vec3 v = particles.view().v(p);
-      for (int a = 0; a < 3; ++a) x[a] += 8.0 * v[a];  // fast: nodes covered and uncovered
-      particles.set_position(p, x);
-    }
+    cases::advance_particles(particles, 8.0);
     if (from_populations) r.solver->invalidate_node_moments();
     c.step(particles.view(true));
   }
