@@ -23,10 +23,10 @@ def run_figures(run):
             "p_max": max(pressures) if pressures else float("nan")}
 
 
-def compare(groups, labels, reference, other, out_dir, name):
+def compare(groups, labels, reference, others, out_dir, name):
     """Each quantity of runs grouped by setting (groups[setting][run] = run_figures), drawn per
-    group; the verdict of `other`: its mean within the spread (min to max) of `reference`'s
-    runs or not. Returns the verdicts, the values per group and the plot's path."""
+    group; the verdict of each group of `others`: its mean within the spread (min to max) of
+    `reference`'s runs or not. Returns the verdicts, the values per group and the plot's path."""
     fig, axes = plt.subplots(1, len(QUANTITIES), figsize=(11, 3.2))
     verdicts, table = [], {}
     for ax, (key, label) in zip(axes, QUANTITIES):
@@ -37,11 +37,12 @@ def compare(groups, labels, reference, other, out_dir, name):
         ax.set_xticks(range(len(labels)))
         ax.set_xticklabels(list(labels.values()))
         ax.set_title(label, fontsize=9)
-        if values[reference] and values[other]:
-            low, high = min(values[reference]), max(values[reference])
-            mean = float(np.mean(values[other]))
-            verdicts.append(f"{key}: {labels[other]} mean {mean:.3g} "
-                            f"{'within' if low <= mean <= high else 'outside'} {labels[reference]}'s {low:.3g}-{high:.3g}")
+        for other in others:
+            if values[reference] and values[other]:
+                low, high = min(values[reference]), max(values[reference])
+                mean = float(np.mean(values[other]))
+                verdicts.append(f"{key}: {labels[other]} mean {mean:.3g} {'within' if low <= mean <= high else 'outside'} "
+                                f"{labels[reference]}'s {low:.3g}-{high:.3g}")
     return verdicts, table, save(fig, out_dir, name)
 
 
@@ -50,7 +51,7 @@ def analyze(summary, out_dir):
     for run in finished_runs(summary):
         n_dem = int(run["knobs"].get("n_dem", 100))
         groups.setdefault(n_dem, {})[run["name"]] = run_figures(run)
-    verdicts, table, png = compare(groups, {100: "N_DEM 100", 20: "N_DEM 20"}, 100, 20, out_dir, "settings")
+    verdicts, table, png = compare(groups, {100: "N_DEM 100", 20: "N_DEM 20"}, 100, (20,), out_dir, "settings")
     ours = "; ".join(verdicts) if verdicts else "no pair of finished runs yet"
     return result(summary, "settings", "N_DEM 20 against 100 (bursts, deposits, P_max)",
                   "the paper uses N_DEM 100 for stability and cost; its statistics should not depend on it",
