@@ -329,24 +329,6 @@ def settings(size):
     return runs
 
 
-def correction(size):
-    """The link mass correction taken in the fluid kernel's pass (mass_correction kernel,
-    faster) against the sweep's, on the settings study's seeds at its length: the two agree
-    to round-off step by step, so the runs part ways as any change in the last bits makes a
-    chaotic flow do. The kernel's becomes the default if its bursts, deposits and P_max lie
-    within the spread of the settings study's N_DEM 100 seeds (figures/correction.py)."""
-    lengths = {"tiny": {}, "quick": dict(steps=2000000),
-               "paper": dict(steps=20000000 - 200000)}[size]
-    seeds = _seeds(_counts(size, 1, 2, 3), first=200003)
-    runs = [(f"seed_{seed}_kernel_correction", _base(size, seed=seed, mass_correction="kernel", **lengths))
-            for seed in seeds]
-    # The control: the sweep's correction on the first seed with the lattice split the other
-    # way ("1 * 1"), a change of the last bits alone: how far the statistics of one seed move
-    # when nothing but the rounding changes.
-    control = _base(size, seed=seeds[0], mass_correction="sweep", procs="1 * 1", **lengths)
-    return runs[:2] + [(f"seed_{seeds[0]}_sweep_split_across", control)] + runs[2:]
-
-
 # The model's open points (doc/calibration.md), each as the knobs that switch it from in.pore's
 # default. deposit_region and deposit_speed change what counts, not the physics: their twins
 # repeat the base run's trajectory and count the deposits inside the pore alone, or every
@@ -364,7 +346,7 @@ MODEL_TWINS = (("no_gap", {"min_gap": 0}),
 
 
 STUDIES = {f.__name__: f for f in (singlejump, collection, dropvol, porelength, porediameter,
-                                   phaseac, phasead, conc, pvpflux, calibration, settings, correction)}
+                                   phaseac, phasead, conc, pvpflux, calibration, settings)}
 
 
 def runs_of(study, size):

@@ -308,8 +308,8 @@ void FluidSolver::collide_stream() {
   args.incompressible = parameters_.incompressible;
   args.rho0 = parameters_.rho0;
   if (keep_node_moments_) args.moments = node_moments_.data();
-  if (pull_correction_armed_) args.pull_correction = pull_correction_.data();
-  pull_correction_armed_ = false;
+  args.pull_corrections = pull_corrections_;
+  pull_corrections_ = PullCorrections{};
   lbm::collide_stream(args);
   f_.set_placement(next);
   ++time_step_;
@@ -322,10 +322,11 @@ void FluidSolver::keep_node_moments() {
   node_moments_.assign(layout_.num_cells());
 }
 
-double* FluidSolver::pull_correction_for_next_step() {
-  if (pull_correction_.size() != layout_.num_cells()) pull_correction_.assign(layout_.num_cells(), 0.0);
-  pull_correction_armed_ = true;
-  return pull_correction_.data();
+void FluidSolver::correct_pulls_in_next_step(const std::uint32_t* cell, const double* defect,
+                                             std::size_t count) {
+  pull_corrections_.cell = cell;
+  pull_corrections_.defect = defect;
+  pull_corrections_.count = count;
 }
 
 void FluidSolver::refresh_node_moments(std::size_t cell) {

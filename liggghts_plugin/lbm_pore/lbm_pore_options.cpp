@@ -165,7 +165,7 @@ PoreOptions parse_pore_options(const std::vector<std::string>& args) {
       if (v != "yes" && v != "on" && v != "sweep" && v != "kernel" && v != "no" && v != "off")
         fail("keyword 'mass_correction' = '" + v + "': must be yes, sweep, kernel or no");
       o.mass_correction = v != "no" && v != "off";
-      o.mass_correction_in_kernel = v == "kernel";
+      o.mass_correction_in_kernel = v != "sweep";
     } else if (key == "reference_pressure") {
       const std::string v = words.text(key);
       if (v != "remove" && v != "keep")

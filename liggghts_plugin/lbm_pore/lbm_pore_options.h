@@ -31,10 +31,10 @@ struct PoreOptions {
   // Put back the mass the interpolated links (bouzidi, mls) create at each node every step
   // (lbm/moving_wall/link_mass.h); 'no' only to reproduce runs made before it existed.
   bool mass_correction = true;
-  // 'kernel': that correction taken in the collide-stream's pass (faster; the same to
-  // round-off, not bit for bit: coupling::SphereCouplingOptions::correct_mass_in_kernel);
-  // 'yes' (the default) and 'sweep': in the moving walls' sweep.
-  bool mass_correction_in_kernel = false;
+  // 'yes' (the default) and 'kernel': that correction taken in the collide-stream's pass
+  // (coupling::SphereCouplingOptions::correct_mass_in_kernel); 'sweep': in the moving walls'
+  // sweep, slower, the same bits.
+  bool mass_correction_in_kernel = true;
   // The momentum exchange keeps each link's reference-pressure share (the paper's Eq. 2 read
   // literally: a particle touching a wall is pressed into it by p0 on its unlinked surface)
   // or removes it (the default; coupling/force/momentum_exchange.h).

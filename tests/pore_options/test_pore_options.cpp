@@ -31,7 +31,7 @@ TEST(PoreOptions, PaperSceneWithDefaults) {
   EXPECT_EQ(o.boundary, "mls");
   EXPECT_TRUE(o.lubrication);
   EXPECT_TRUE(o.mass_correction);
-  EXPECT_FALSE(o.mass_correction_in_kernel);
+  EXPECT_TRUE(o.mass_correction_in_kernel);
   EXPECT_FALSE(o.keep_reference_pressure);
   EXPECT_FALSE(o.substep_fraction);
   EXPECT_EQ(o.checkpoint_keep, 0);
@@ -66,8 +66,8 @@ TEST(PoreOptions, MassCorrectionInTheKernel) {
   EXPECT_TRUE(o.mass_correction);
   EXPECT_TRUE(o.mass_correction_in_kernel);
   EXPECT_TRUE(lbm_pore::coupling_options(o).correct_mass_in_kernel);
-  EXPECT_FALSE(lbm_pore::coupling_options(lbm_pore::parse_pore_options(split("dx 1" + kScene)))
-                   .correct_mass_in_kernel);
+  EXPECT_TRUE(lbm_pore::coupling_options(lbm_pore::parse_pore_options(split("dx 1" + kScene)))
+                  .correct_mass_in_kernel);
   EXPECT_FALSE(lbm_pore::coupling_options(lbm_pore::parse_pore_options(split("dx 1 mass_correction sweep" + kScene)))
                    .correct_mass_in_kernel);
 }

@@ -6,6 +6,7 @@
 
 #include "lbm/block_layout.h"
 #include "lbm/d3q19.h"
+#include "lbm/pull_correction.h"
 #include "lbm/real.h"
 
 namespace lbm {
@@ -51,11 +52,11 @@ struct CollideStreamArgs {
   // instead of gathering 19 populations from 19 arrays. Non-fluid nodes get rho = 1 and
   // u = -F/2.
   double* moments = nullptr;
-  // Where non-null, per cell a density d(x) taken off the populations x pulls before it
-  // collides, d(x) w_q from each (a density change at rest), then reset to zero: the moving
-  // walls' link mass correction (lbm/moving_wall/link_mass.h) left to this pass, which reads
-  // those slots anyway. Cells outside the computed ones must hold zero.
-  double* pull_correction = nullptr;
+  // Densities taken off the populations some nodes pull before they collide, written into
+  // those slots in the pass that reads them (lbm/pull_correction.h): the moving walls' link
+  // mass correction, bit for bit as the moving walls' sweep writes it. Nodes outside the
+  // computed cells must have none.
+  PullCorrections pull_corrections;
 };
 
 // Pull stream + TRT collision (Guo forcing split into its even and odd parts) on every

@@ -14,6 +14,7 @@
 #include "lbm/node_type.h"
 #include "lbm/open_boundary.h"
 #include "lbm/population_field.h"
+#include "lbm/pull_correction.h"
 #include "lbm/trt.h"
 #include "lbm/voxel_geometry.h"
 
@@ -161,11 +162,11 @@ class FluidSolver {
   void exchange_ghost_node_moments(const std::array<bool, 3>& axes);
   void invalidate_node_moments() { node_moments_valid_ = false; }
 
-  // The moving walls' link mass correction taken in the next collide_stream's pass
-  // (CollideStreamArgs::pull_correction) instead of in the moving walls' sweep: one value per
-  // cell, all zero, which the caller sets at the nodes it corrects (a density taken off the
-  // populations the node pulls); the next collide_stream takes it off and zeroes it again.
-  double* pull_correction_for_next_step();
+  // Densities the next collide_stream takes off the populations some nodes pull, in its own
+  // pass (lbm/pull_correction.h: `count` entries, cell ascending, a node's consecutive): the
+  // moving walls' link mass correction, the same bits as written into the slots before it.
+  // The arrays must live until then; nothing else may read those nodes' slots in between.
+  void correct_pulls_in_next_step(const std::uint32_t* cell, const double* defect, std::size_t count);
 
   // Macroscopic values at a local cell, from the stored post-collision populations:
   // rho = sum f, rho u = sum c f - F/2 (the Guo forcing shift undone).
@@ -219,8 +220,7 @@ class FluidSolver {
   long long time_step_ = 0;
   NodeMomentField node_moments_;  // keep_node_moments()
   bool keep_node_moments_ = false, node_moments_valid_ = false;
-  std::vector<double> pull_correction_;  // pull_correction_for_next_step()
-  bool pull_correction_armed_ = false;
+  PullCorrections pull_corrections_;  // correct_pulls_in_next_step()
 };
 
 }  // namespace lbm

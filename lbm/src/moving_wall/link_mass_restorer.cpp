@@ -28,8 +28,8 @@ static_assert(kOpen == 3 && kFluid < 3 && kSolid < 3 && kMoving < 3, "maybe_open
 
 LinkMassRestorer::LinkMassRestorer(const BlockLayout& layout,
                                    const std::vector<std::uint8_t>& node_type, PopulationField& f,
-                                   double* kernel_correction)
-    : rest_(f.q(0)), type_(node_type.data()), kernel_correction_(kernel_correction) {
+                                   Deferral deferral)
+    : rest_(f.q(0)), type_(node_type.data()), deferral_(deferral) {
   // Taken once: through a Real& the field's own pointer and size would be reloaded after
   // every store, 19 times per link.
   for (int p = 0; p < L::Q; ++p) {
@@ -79,16 +79,16 @@ void LinkMassRestorer::remove(std::size_t x, double d) const {
 
 void LinkMassRestorer::remove_node(std::size_t x, const double* defect, const std::uint32_t* first,
                                    const std::uint32_t* last) const {
-  if (next_to_open(x)) {
+  const bool open = next_to_open(x);
+  if (deferral_.defects) {
+    double* const deferred = deferral_.defects + (first - deferral_.ids);
+    for (const std::uint32_t* l = first; l != last; ++l) deferred[l - first] = open ? 0.0 : defect[*l];
+  }
+  if (open) {
     for (const std::uint32_t* l = first; l != last; ++l) remove_next_to_open(x, defect[*l]);
     return;
   }
-  if (kernel_correction_) {
-    double sum = 0.0;
-    for (const std::uint32_t* l = first; l != last; ++l) sum += defect[*l];
-    kernel_correction_[x] = sum;
-    return;
-  }
+  if (deferral_.defects) return;
   // Each slot takes the links' shares one after the other, as remove() per link would.
 #pragma GCC unroll 19
   for (int p = 0; p < L::Q; ++p) {

@@ -32,7 +32,11 @@ void LinkSweep::sort(const std::vector<BoundaryLink>& links, const BlockLayout& 
   ids_.resize(n);
   for (const std::uint32_t l : by_cell_in_block_) ids_[next_[cell_[l] >> kBlockShift]++] = l;
   sorted_.resize(n);
-  for (std::size_t i = 0; i < n; ++i) sorted_[i] = links[ids_[i]];
+  sorted_cells_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    sorted_[i] = links[ids_[i]];
+    sorted_cells_[i] = cell_[ids_[i]];
+  }
   // Cells one link apart (the scheme's reads x - c_q, the correction's writes x - c_p) are
   // at most `reach` indices apart, so at most reach / block + 1 blocks.
   std::ptrdiff_t reach = 0;
@@ -65,8 +69,12 @@ LinkMassDefect apply_links_and_restore_mass(const std::vector<BoundaryLink>& lin
   PopulationField& f = solver.populations();
   const int threads = link_threads(links.size());
   order.sort(links, layout);
-  const LinkMassRestorer restorer(layout, solver.node_types(), f,
-                                  correct_in_kernel ? solver.pull_correction_for_next_step() : nullptr);
+  LinkMassRestorer::Deferral deferral;
+  if (correct_in_kernel) {
+    order.deferred_defects().resize(links.size());
+    deferral = {order.ids(), order.deferred_defects().data()};
+  }
+  const LinkMassRestorer restorer(layout, solver.node_types(), f, deferral);
   switch (scheme) {
     case MovingWallScheme::kBounceBack:
       sweep(links, order, BounceBack{rho0}, layout, rho0, restorer, f, populations, per_link, threads);
@@ -86,6 +94,8 @@ LinkMassDefect apply_links_and_restore_mass(const std::vector<BoundaryLink>& lin
       break;
     }
   }
+  if (correct_in_kernel)
+    solver.correct_pulls_in_next_step(order.sorted_cells(), order.deferred_defects().data(), links.size());
   LinkMassDefect total;
   for (const double d : per_link) total.add(d);
   return total;

@@ -12,11 +12,11 @@
 // the same checksum from two builds means the same bits.
 //
 //   bench_coupling_stages [--steps N] [--repeat N] [--spheres N] [--evict-mb N] [--gather-moments]
-//                         [--correct-in-kernel]
+//                         [--correct-in-sweep]
 // (--gather-moments: the moving walls gather the moments from the populations instead of
 // reading the field the kernel keeps, SphereCouplingOptions::kernel_moments;
-// --correct-in-kernel: the link mass correction in the kernel's pass,
-// SphereCouplingOptions::correct_mass_in_kernel; --evict-mb N:
+// --correct-in-sweep: the link mass correction in the moving walls' sweep rather than the
+// kernel's pass, SphereCouplingOptions::correct_mass_in_kernel = false; --evict-mb N:
 // N MiB of other data are written between two fluid steps, outside the timed stages, as the
 // DEM substeps of a full run do, so that each step starts with the lattice out of the
 // caches: 0, the default, keeps the caches of the last step)
@@ -93,11 +93,11 @@ double median(std::vector<double> v) {
 
 int main(int argc, char** argv) {
   int steps = 500, repeat = 5, spheres = 40, evict_mb = 0;
-  bool kernel_moments = true, correct_in_kernel = false;
+  bool kernel_moments = true, correct_in_kernel = true;
   for (int i = 1; i < argc; i += 2) {
     const std::string key = argv[i];
-    if (key == "--gather-moments" || key == "--correct-in-kernel") {
-      (key == "--gather-moments" ? kernel_moments : correct_in_kernel) = key == "--correct-in-kernel";
+    if (key == "--gather-moments" || key == "--correct-in-sweep") {
+      (key == "--gather-moments" ? kernel_moments : correct_in_kernel) = false;
       --i;
       continue;
     }

@@ -27,9 +27,8 @@ struct SphereCouplingOptions {
   bool conserve_link_mass = true;
   // That correction taken in the collide-stream kernel's pass, which reads the populations it
   // changes anyway, instead of in the moving walls' sweep (FluidSolver::
-  // pull_correction_for_next_step): the same correction with each node's defects summed
-  // first, so the same to round-off, not bit for bit.
-  bool correct_mass_in_kernel = false;
+  // correct_pulls_in_next_step): the same operations on the same values, the same bits.
+  bool correct_mass_in_kernel = true;
   // Mei-Luo-Shyy reads the moments of the nodes next to the spheres from the field the
   // collide-stream kernel keeps (FluidSolver::keep_node_moments) rather than gathering each
   // node's 19 populations (the same values bit for bit; which is faster depends on the load:

@@ -64,13 +64,24 @@ double moving_surface_mass(const std::vector<BoundaryLink>& links, double rho0);
 
 // The correction's writes, one link at a time: remove(x, delta_l) takes delta_l w_p from
 // each slot f_p(x - c_p). The arrays' addresses and offsets are taken once, at construction
-// (link_mass_restorer.cpp). Where `kernel_correction` is non-null, remove_node leaves the
-// nodes away from the open faces to the collide-stream kernel: their links' defects summed
-// (in link order) into kernel_correction[x] (CollideStreamArgs::pull_correction).
+// (link_mass_restorer.cpp). With a `Deferral`, remove_node leaves the nodes away from the
+// open faces to the collide-stream's pass (FluidSolver::correct_pulls_in_next_step, which
+// performs the same operations): it copies their links' defects, in order, to the entries of
+// their sorted positions.
+// LinkMassRestorer's deferral: `ids` are the sorted link ids whose ranges remove_node
+// receives; the defect of the link at sorted position i goes to defects[i] (zero for a node
+// next to an open face, which remove_node corrects itself: a subtraction of zero changes no
+// slot).
+struct LinkMassDeferral {
+  const std::uint32_t* ids = nullptr;
+  double* defects = nullptr;
+};
+
 class LinkMassRestorer {
  public:
+  using Deferral = LinkMassDeferral;
   LinkMassRestorer(const BlockLayout& layout, const std::vector<std::uint8_t>& node_type,
-                   PopulationField& f, double* kernel_correction = nullptr);
+                   PopulationField& f, Deferral deferral = {});
   void remove(std::size_t fluid_cell, double defect) const;
   // remove(x, defect[*l]) for each link id l in [first, last), all of node x, in that order,
   // with each of the 19 slots read and written once (the same roundings).
@@ -85,7 +96,7 @@ class LinkMassRestorer {
   std::ptrdiff_t row_[4];   // +- e_2, +- e_3: the rows beside x along the first axis
   std::ptrdiff_t edge_[4];  // +- e_2 +- e_3
   const std::uint8_t* type_;
-  double* kernel_correction_;
+  Deferral deferral_;
 
   bool next_to_open(std::size_t fluid_cell) const;
   void remove_next_to_open(std::size_t fluid_cell, double defect) const;

@@ -48,13 +48,18 @@ class LinkSweep {
   const BoundaryLink& link(std::size_t i) const { return sorted_[i]; }
   const std::uint32_t* ids() const { return ids_.data(); }
   const BoundaryLink* sorted_links() const { return sorted_.data(); }
+  // The fluid cell of the link at each sorted position (ascending), and room for one value
+  // per position: the defects left to the kernel (LinkMassRestorer::Deferral).
+  const std::uint32_t* sorted_cells() const { return sorted_cells_.data(); }
+  std::vector<double>& deferred_defects() { return deferred_defects_; }
   // The first block of share t of `shares` (0 <= t <= shares): the blocks [block_of_share(t),
   // block_of_share(t + 1)) hold about 1/shares of the links, whole blocks; share `shares`
   // starts at num_blocks().
   std::size_t block_of_share(int t, int shares) const;
 
  private:
-  std::vector<std::uint32_t> begin_, next_, ids_, by_cell_in_block_, cell_;
+  std::vector<std::uint32_t> begin_, next_, ids_, by_cell_in_block_, cell_, sorted_cells_;
+  std::vector<double> deferred_defects_;
   std::vector<BoundaryLink> sorted_;
   std::size_t lag_ = 0;
 };
@@ -74,9 +79,9 @@ void sweep(const std::vector<BoundaryLink>& links, const LinkSweep& order, const
 // solver's node_moment_field, whose ghosts every link may read hold their owners' moments),
 // else from `cache`, with `ghosts` (as for apply_links) preset in it. With
 // `correct_in_kernel`, the correction of the nodes away from the open faces is left to the
-// solver's next collide_stream (FluidSolver::pull_correction_for_next_step: the same
-// correction, the defects summed per node first, so equal to round-off), which must come
-// before anything else reads those nodes' populations.
+// solver's next collide_stream (FluidSolver::correct_pulls_in_next_step: the same operations
+// on the same slots, so the same bits), which must come before anything else reads those
+// nodes' populations.
 LinkMassDefect apply_links_and_restore_mass(const std::vector<BoundaryLink>& links,
                                             MovingWallScheme scheme, FluidSolver& solver,
                                             MomentCache& cache, LinkSweep& order,
