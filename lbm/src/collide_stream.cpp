@@ -72,6 +72,8 @@ using L = D3Q19;
 // the paper's rank block, 2 interleaved rounds). Measure with bench_lbm (doc/performance.md).
 constexpr int kChunkStreaming = 320;
 constexpr int kChunkPlain = 128;
+// Nodes per block of a chunk with pull corrections (a multiple of the vector width).
+constexpr int kCorrectedBlock = 32;
 // Room for the held-back tail before a chunk's values: less than a line.
 constexpr int kHeldBack = int(detail::kCacheLine / sizeof(Real));
 // Streaming stores pay where the arrays do not stay in the cache between steps (128^3:
@@ -118,9 +120,8 @@ void fill_fluid_mask(const std::uint8_t* __restrict type, const Run& run, int st
 // kIncompressible: He & Luo's equilibrium, the momentum rho0 u and rho only in the zeroth
 // order (a compile-time choice, so the standard kernel's arithmetic is untouched).
 // kMoments: the outputs' moments into moments, four per cell (CollideStreamArgs::moments).
-// The pull corrections (CollideStreamArgs::pull_corrections) of a chunk's nodes are written
-// into their slots just before the chunk pulls them. (Measured on the paper's load, against
-// a copy of the chunk's inputs corrected in L1: no faster.)
+// The pull corrections (CollideStreamArgs::pull_corrections) of a block of a chunk's nodes
+// are written into their slots just before the block pulls them.
 template <int kChunk, bool kForce, bool kIncompressible, bool kMoments>
 void collide_stream_run(const Real* const* src, Real* const* dst,
                         const std::uint8_t* __restrict type, const Run& run,
@@ -150,92 +151,98 @@ void collide_stream_run(const Real* const* src, Real* const* dst,
       if constexpr (streaming) out[q] = f[q] + held[q];
       else out[q] = dst[q] + first;
     }
-    if (corrections.count != 0) {
-      // Written into the slots the chunk is about to pull (each node's slots are its own).
-      Real* slots[L::Q];
-      #pragma GCC unroll 19
-      for (int q = 0; q < L::Q; ++q) slots[q] = const_cast<Real*>(pull[q]);
-      apply_pull_corrections(corrections, first, first + std::size_t(m), slots);
-    }
     fill_fluid_mask(type, run, start, m, fluid_mask);
+    // With pull corrections, the chunk in blocks of kCorrectedBlock nodes, each block's
+    // corrections written into the slots it is about to pull (each node's slots are its own):
+    // lines the hardware has just prefetched for the streams, a few ahead of them.
+    const bool corrected = corrections.count != 0;
+    for (int i0 = 0; i0 < m; i0 += corrected ? kCorrectedBlock : m) {
+      const int i1 = corrected && i0 + kCorrectedBlock < m ? i0 + kCorrectedBlock : m;
+      if (corrected) {
+        Real* slots[L::Q];
+        #pragma GCC unroll 19
+        for (int q = 0; q < L::Q; ++q) slots[q] = const_cast<Real*>(pull[q]) + i0;
+        apply_pull_corrections(corrections, first + std::size_t(i0), first + std::size_t(i1), slots);
+      }
 #pragma omp simd
-    for (int i = 0; i < m; ++i) {
-      const double fluid = fluid_mask[i];
-      double fin[L::Q];
-      [[maybe_unused]] double post[L::Q];
-      #pragma GCC unroll 19
-      for (int q = 0; q < L::Q; ++q) fin[q] = pull[q][i];
-      double rho = 0.0, jx = 0.0, jy = 0.0, jz = 0.0;
-      #pragma GCC unroll 19
-      for (int q = 0; q < L::Q; ++q) {
-        rho += fin[q];
-        jx += fin[q] * L::c[q][0];
-        jy += fin[q] * L::c[q][1];
-        jz += fin[q] * L::c[q][2];
-      }
-      // Non-fluid nodes are computed on a harmless state (rho = 1, u = 0) and zeroed
-      // below, so the loop needs no branch.
-      rho = fluid * rho + (1.0 - fluid);
-      const double inv_rho = kIncompressible ? 1.0 / rho0 : 1.0 / rho;
-      double ux = fluid * jx * inv_rho, uy = fluid * jy * inv_rho, uz = fluid * jz * inv_rho;
-      if (kForce) {
-        ux += 0.5 * fx * inv_rho;
-        uy += 0.5 * fy * inv_rho;
-        uz += 0.5 * fz * inv_rho;
-      }
-      const double uu = 1.5 * (ux * ux + uy * uy + uz * uz);
-      const double uf = kForce ? (ux * fx + uy * fy + uz * fz) : 0.0;
-      {  // Rest population: purely even.
-        const double feq =
-            kIncompressible ? L::w[0] * (rho - rho0 * uu) : L::w[0] * rho * (1.0 - uu);
-        double result = fin[0] - omega_plus * (fin[0] - feq);
-        if (kForce) result += source_even * L::w[0] * (-3.0 * uf);
-        out[0][i] = static_cast<Out>(fluid * result);
-        if (kMoments) post[0] = static_cast<Real>(fluid * result);
-      }
-      // Pairs (q, q+1) are opposite: split into symmetric and antisymmetric parts.
-      #pragma GCC unroll 19
-      for (int q = 1; q < L::Q; q += 2) {
-        const double cu = L::c[q][0] * ux + L::c[q][1] * uy + L::c[q][2] * uz;
-        const double w = L::w[q];
-        const double eq_plus = kIncompressible ? w * (rho + rho0 * (4.5 * cu * cu - uu))
-                                               : w * rho * (1.0 + 4.5 * cu * cu - uu);
-        const double eq_minus = w * (kIncompressible ? rho0 : rho) * 3.0 * cu;
-        const double a = fin[q], b = fin[q + 1];
-        const double relax_plus = omega_plus * (0.5 * (a + b) - eq_plus);
-        const double relax_minus = omega_minus * (0.5 * (a - b) - eq_minus);
-        double source_plus = 0.0, source_minus = 0.0;
-        if (kForce) {
-          const double cf = L::c[q][0] * fx + L::c[q][1] * fy + L::c[q][2] * fz;
-          source_plus = source_even * w * (9.0 * cu * cf - 3.0 * uf);
-          source_minus = source_odd * w * 3.0 * cf;
-        }
-        out[q][i] = static_cast<Out>(fluid * (a - relax_plus - relax_minus + source_plus + source_minus));
-        out[q + 1][i] = static_cast<Out>(fluid * (b - relax_plus + relax_minus + source_plus - source_minus));
-        if (kMoments) {
-          post[q] = static_cast<Real>(fluid * (a - relax_plus - relax_minus + source_plus + source_minus));
-          post[q + 1] = static_cast<Real>(fluid * (b - relax_plus + relax_minus + source_plus - source_minus));
-        }
-      }
-      if (kMoments) {
-        // node_moments (macroscopic.cpp) of the stored values, in its order: rho and j
-        // summed over q = 0..18, the terms with c = 0 left out, c = -1 subtracted.
-        double m_rho = 0.0, m_j[3] = {0.0, 0.0, 0.0};
+      for (int i = i0; i < i1; ++i) {
+        const double fluid = fluid_mask[i];
+        double fin[L::Q];
+        [[maybe_unused]] double post[L::Q];
+        #pragma GCC unroll 19
+        for (int q = 0; q < L::Q; ++q) fin[q] = pull[q][i];
+        double rho = 0.0, jx = 0.0, jy = 0.0, jz = 0.0;
         #pragma GCC unroll 19
         for (int q = 0; q < L::Q; ++q) {
-          m_rho += post[q];
-          #pragma GCC unroll 3
-          for (int a = 0; a < 3; ++a) {
-            if (L::c[q][a] == 1) m_j[a] += post[q];
-            if (L::c[q][a] == -1) m_j[a] -= post[q];
+          rho += fin[q];
+          jx += fin[q] * L::c[q][0];
+          jy += fin[q] * L::c[q][1];
+          jz += fin[q] * L::c[q][2];
+        }
+        // Non-fluid nodes are computed on a harmless state (rho = 1, u = 0) and zeroed
+        // below, so the loop needs no branch.
+        rho = fluid * rho + (1.0 - fluid);
+        const double inv_rho = kIncompressible ? 1.0 / rho0 : 1.0 / rho;
+        double ux = fluid * jx * inv_rho, uy = fluid * jy * inv_rho, uz = fluid * jz * inv_rho;
+        if (kForce) {
+          ux += 0.5 * fx * inv_rho;
+          uy += 0.5 * fy * inv_rho;
+          uz += 0.5 * fz * inv_rho;
+        }
+        const double uu = 1.5 * (ux * ux + uy * uy + uz * uz);
+        const double uf = kForce ? (ux * fx + uy * fy + uz * fz) : 0.0;
+        {  // Rest population: purely even.
+          const double feq =
+              kIncompressible ? L::w[0] * (rho - rho0 * uu) : L::w[0] * rho * (1.0 - uu);
+          double result = fin[0] - omega_plus * (fin[0] - feq);
+          if (kForce) result += source_even * L::w[0] * (-3.0 * uf);
+          out[0][i] = static_cast<Out>(fluid * result);
+          if (kMoments) post[0] = static_cast<Real>(fluid * result);
+        }
+        // Pairs (q, q+1) are opposite: split into symmetric and antisymmetric parts.
+        #pragma GCC unroll 19
+        for (int q = 1; q < L::Q; q += 2) {
+          const double cu = L::c[q][0] * ux + L::c[q][1] * uy + L::c[q][2] * uz;
+          const double w = L::w[q];
+          const double eq_plus = kIncompressible ? w * (rho + rho0 * (4.5 * cu * cu - uu))
+                                                 : w * rho * (1.0 + 4.5 * cu * cu - uu);
+          const double eq_minus = w * (kIncompressible ? rho0 : rho) * 3.0 * cu;
+          const double a = fin[q], b = fin[q + 1];
+          const double relax_plus = omega_plus * (0.5 * (a + b) - eq_plus);
+          const double relax_minus = omega_minus * (0.5 * (a - b) - eq_minus);
+          double source_plus = 0.0, source_minus = 0.0;
+          if (kForce) {
+            const double cf = L::c[q][0] * fx + L::c[q][1] * fy + L::c[q][2] * fz;
+            source_plus = source_even * w * (9.0 * cu * cf - 3.0 * uf);
+            source_minus = source_odd * w * 3.0 * cf;
+          }
+          out[q][i] = static_cast<Out>(fluid * (a - relax_plus - relax_minus + source_plus + source_minus));
+          out[q + 1][i] = static_cast<Out>(fluid * (b - relax_plus + relax_minus + source_plus - source_minus));
+          if (kMoments) {
+            post[q] = static_cast<Real>(fluid * (a - relax_plus - relax_minus + source_plus + source_minus));
+            post[q + 1] = static_cast<Real>(fluid * (b - relax_plus + relax_minus + source_plus - source_minus));
           }
         }
-        m_rho += 1.0 - fluid;  // exact for fluid nodes (+0), 1 elsewhere
-        double* const kept = moments + 4 * (first + std::size_t(i));
-        kept[0] = m_rho;
-        kept[1] = (m_j[0] - 0.5 * fx) / m_rho;
-        kept[2] = (m_j[1] - 0.5 * fy) / m_rho;
-        kept[3] = (m_j[2] - 0.5 * fz) / m_rho;
+        if (kMoments) {
+          // node_moments (macroscopic.cpp) of the stored values, in its order: rho and j
+          // summed over q = 0..18, the terms with c = 0 left out, c = -1 subtracted.
+          double m_rho = 0.0, m_j[3] = {0.0, 0.0, 0.0};
+          #pragma GCC unroll 19
+          for (int q = 0; q < L::Q; ++q) {
+            m_rho += post[q];
+            #pragma GCC unroll 3
+            for (int a = 0; a < 3; ++a) {
+              if (L::c[q][a] == 1) m_j[a] += post[q];
+              if (L::c[q][a] == -1) m_j[a] -= post[q];
+            }
+          }
+          m_rho += 1.0 - fluid;  // exact for fluid nodes (+0), 1 elsewhere
+          double* const kept = moments + 4 * (first + std::size_t(i));
+          kept[0] = m_rho;
+          kept[1] = (m_j[0] - 0.5 * fx) / m_rho;
+          kept[2] = (m_j[1] - 0.5 * fy) / m_rho;
+          kept[3] = (m_j[2] - 0.5 * fz) / m_rho;
+        }
       }
     }
     if constexpr (!streaming) continue;
