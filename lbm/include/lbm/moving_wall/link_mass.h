@@ -62,12 +62,6 @@ LinkMassDefect link_mass_defect(const std::vector<BoundaryLink>& links, double r
 // contact with a wall or another sphere. The fluid budget books it (doc/stability.md).
 double moving_surface_mass(const std::vector<BoundaryLink>& links, double rho0);
 
-// The correction's writes, one link at a time: remove(x, delta_l) takes delta_l w_p from
-// each slot f_p(x - c_p). The arrays' addresses and offsets are taken once, at construction
-// (link_mass_restorer.cpp). With a `Deferral`, remove_node leaves the nodes away from the
-// open faces to the collide-stream's pass (FluidSolver::correct_pulls_in_next_step, which
-// performs the same operations): it copies their links' defects, in order, to the entries of
-// their sorted positions.
 // LinkMassRestorer's deferral: `ids` are the sorted link ids whose ranges remove_node
 // receives; the defect of the link at sorted position i goes to defects[i] (zero for a node
 // next to an open face, which remove_node corrects itself: a subtraction of zero changes no
@@ -77,6 +71,12 @@ struct LinkMassDeferral {
   double* defects = nullptr;
 };
 
+// The correction's writes, one link at a time: remove(x, delta_l) takes delta_l w_p from
+// each slot f_p(x - c_p). The arrays' addresses and offsets are taken once, at construction
+// (link_mass_restorer.cpp). With a `Deferral`, remove_node leaves the nodes away from the
+// open faces to the collide-stream's pass (FluidSolver::correct_pulls_in_next_step, which
+// performs the same operations): it copies their links' defects, in order, to the entries of
+// their sorted positions.
 class LinkMassRestorer {
  public:
   using Deferral = LinkMassDeferral;
