@@ -12,11 +12,6 @@ namespace {
 using L = D3Q19;
 }  // namespace
 
-void LinkMassDefect::add(double defect) {
-  net += defect;
-  absolute += std::abs(defect);
-}
-
 // delta_l: what the link returned minus what half-way bounce-back would have returned.
 double link_defect(const BoundaryLink& link, double rho0, const LinkPopulations& populations) {
   return populations.back - (populations.out - wall_term(link.q, rho0, link.wall_velocity));

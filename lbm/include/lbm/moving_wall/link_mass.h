@@ -24,6 +24,7 @@
 // of accuracy is kept (the accuracy tests measure it). Purely local: every slot it writes is
 // pulled by x alone, so no halo exchange and no global sum; halo slots written are the
 // copies x pulls.
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -39,7 +40,11 @@ namespace lbm::moving_wall {
 struct LinkMassDefect {
   double net = 0.0;
   double absolute = 0.0;
-  void add(double defect);  // one more link, in link order
+  // One more link, in link order (inline: called once per link, per step).
+  void add(double defect) {
+    net += defect;
+    absolute += std::abs(defect);
+  }
 };
 
 // delta_l of one link from its populations (apply_links' `populations` output).
