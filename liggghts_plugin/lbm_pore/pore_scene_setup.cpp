@@ -293,7 +293,7 @@ std::string setup_summary(const PoreOptions& o, const coupling::UnitConversion& 
                        drive.pressure_loss, 3.0 * drive.pressure_loss);
   n += std::snprintf(text + n, sizeof text - n, "fix lbm/pore: moving walls %s (mass correction %s), lubrication %s (cutoff %g cells)\n",
                      o.boundary.c_str(),
-                     !o.mass_correction ? "off" : o.mass_correction_in_kernel ? "in the kernel" : "on", o.lubrication ? "on" : "off", o.lubrication_cutoff);
+                     !o.mass_correction ? "off" : o.mass_correction_in_kernel ? "in the kernel's pass" : "in the sweep", o.lubrication ? "on" : "off", o.lubrication_cutoff);
   if (bytes_per_node > 0.0)
     std::snprintf(text + n, sizeof text - n,
                   "fix lbm/pore: memory %.0f bytes per lattice node (fluid %.0f, particle coupling %.0f)\n",

@@ -277,7 +277,8 @@ def case_outlet_exit(h):
 
 def case_mpi_splits(h):
     """1 rank against 3 (processors 3 1 1) and 4 (2 2 1, 1 2 2; oversubscribed on 2 cores), and
-    with the mass correction in the kernel's pass 1 rank against the sweep's and against 4.
+    with the mass correction in the moving walls' sweep 1 rank against the kernel's pass (the
+    default: the same rows) and against 4.
     In in.transit a weak gravity along (0, 1, 1) makes particle 1 sink across y = 10 and
     z = 10 while the flow carries it across x = 10 and x = 15, so that it changes owner across
     an x, a y and a z face of the grids (checked in the serial run), passing near the y-z edge
