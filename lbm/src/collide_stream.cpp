@@ -16,6 +16,7 @@
 #include "lbm/d3q19.h"
 #include "lbm/node_type.h"
 #include "lbm/streaming_store.h"
+#include "lbm/thread_team.h"
 
 namespace lbm {
 
@@ -117,17 +118,47 @@ void fill_fluid_mask(const std::uint8_t* __restrict type, const Run& run, int st
   }
 }
 
+// One thread's share of the pull corrections' preparation (PullPreparation): the cells
+// [begin, end) from its first run to the next thread's (the first thread's from 0, the last's
+// to kNoCell), so that the shares cover every node once. The nodes within a reach of either
+// end at once (before the barrier that precedes every thread's first block), then the
+// others a reach ahead of each block it computes.
+constexpr std::size_t kNoCell = ~std::size_t(0);
+class PreparedCells {
+ public:
+  PreparedCells() = default;  // nothing to prepare
+  PreparedCells(const PullPreparation& p, std::size_t begin, std::size_t end) : p_(p) {
+    if (!p_.prepare || begin >= end) return;
+    next_ = std::min(end, begin + p_.reach);
+    stop_ = std::max(next_, end - std::min(end, p_.reach));
+    p_.prepare(p_.context, begin, next_);
+    if (stop_ < end) p_.prepare(p_.context, stop_, end);
+  }
+  // Before the kernel computes cells below `end`.
+  void before(std::size_t end) {
+    const std::size_t to = std::min(stop_, end + p_.reach);
+    if (to <= next_) return;
+    p_.prepare(p_.context, next_, to);
+    next_ = to;
+  }
+
+ private:
+  PullPreparation p_;
+  std::size_t next_ = 0, stop_ = 0;
+};
+
 // kIncompressible: He & Luo's equilibrium, the momentum rho0 u and rho only in the zeroth
 // order (a compile-time choice, so the standard kernel's arithmetic is untouched).
 // kMoments: the outputs' moments into moments, four per cell (CollideStreamArgs::moments).
 // The pull corrections (CollideStreamArgs::pull_corrections) of a block of a chunk's nodes
-// are written into their slots just before the block pulls them.
+// are prepared (`prepared`) and written into their slots just before the block pulls them.
 template <int kChunk, bool kForce, bool kIncompressible, bool kMoments>
 void collide_stream_run(const Real* const* src, Real* const* dst,
                         const std::uint8_t* __restrict type, const Run& run,
                         const std::ptrdiff_t* off, double omega_plus,
                         double omega_minus, double fx, double fy, double fz, double rho0,
-                        double* moments, const PullCorrections& corrections) {
+                        double* moments, const PullCorrections& corrections,
+                        PreparedCells& prepared) {
   constexpr bool streaming = kChunk == kChunkStreaming;
   using Out = std::conditional_t<streaming, double, Real>;
   const double source_even = 1.0 - 0.5 * omega_plus;
@@ -159,6 +190,7 @@ void collide_stream_run(const Real* const* src, Real* const* dst,
     for (int i0 = 0; i0 < m; i0 += corrected ? kCorrectedBlock : m) {
       const int i1 = corrected && i0 + kCorrectedBlock < m ? i0 + kCorrectedBlock : m;
       if (corrected) {
+        prepared.before(first + std::size_t(i1));
         Real* slots[L::Q];
         #pragma GCC unroll 19
         for (int q = 0; q < L::Q; ++q) slots[q] = const_cast<Real*>(pull[q]) + i0;
@@ -292,7 +324,7 @@ bool output_exceeds_cache(std::size_t cells) {
 
 using RunKernel = void (*)(const Real* const*, Real* const*, const std::uint8_t*, const Run&,
                           const std::ptrdiff_t*, double, double, double, double, double, double,
-                          double*, const PullCorrections&);
+                          double*, const PullCorrections&, PreparedCells&);
 
 template <int kChunk, bool kMoments>
 RunKernel run_kernel(bool incompressible, bool forced) {
@@ -326,17 +358,28 @@ void collide_stream(const CollideStreamArgs& a) {
                              : run_kernel<kChunkPlain>(a.incompressible, forced, moments);
   const int nx = g.size(0), ny = g.size(1), nz = g.size(2);
   if (nx <= 0 || ny <= 0 || nz <= 0) return;
+  // Thread t of nt computes the t-th of nt contiguous shares of the spans or of the plane
+  // runs, in ascending cells (each node on its own: the split changes no bit).
+  const PullPreparation& preparation = a.pull_corrections.preparation;
+  const bool prepare = preparation.prepare != nullptr && a.pull_corrections.count != 0;
   if (a.spans) {
-    // The caller's spans, in order, split statically over the threads.
-    const std::ptrdiff_t count = std::ptrdiff_t(a.num_spans);
+    const std::size_t count = a.num_spans;
 #pragma omp parallel
     {
-#pragma omp for schedule(static) nowait
-      for (std::ptrdiff_t i = 0; i < count; ++i) {
+      const auto [t, nt] = team_member();
+      const std::size_t i0 = count * std::size_t(t) / std::size_t(nt);
+      const std::size_t i1 = count * std::size_t(t + 1) / std::size_t(nt);
+      PreparedCells prepared;
+      if (prepare) {
+        const auto start = [&](std::size_t i) { return i < count ? a.spans[i].first : kNoCell; };
+        prepared = PreparedCells(preparation, t == 0 ? 0 : start(i0), start(i1));
+#pragma omp barrier
+      }
+      for (std::size_t i = i0; i < i1; ++i) {
         const KernelSpan& span = a.spans[i];
         const Run r{span.first, span.length, g.padded(0), nx, g.coords(span.first)[0]};
         run(a.src.data(), a.dst.data(), a.node_type, r, off, a.omega_plus, a.omega_minus,
-            a.force[0], a.force[1], a.force[2], a.rho0, a.moments, a.pull_corrections);
+            a.force[0], a.force[1], a.force[2], a.rho0, a.moments, a.pull_corrections, prepared);
       }
       detail::streaming_store_fence();
     }
@@ -350,17 +393,29 @@ void collide_stream(const CollideStreamArgs& a) {
   const int threads = 1;
 #endif
   const int parts = std::min(ny, (threads + nz - 1) / nz);
+  const auto run_of = [&](int i) {  // run i of nz * parts, in ascending cells; empty: length 0
+    const int k = i / parts, part = i % parts;
+    const int j0 = part * ny / parts, j1 = (part + 1) * ny / parts;
+    if (j0 == j1) return Run{g.cell(0, 0, k), 0, g.padded(0), nx, 0};
+    return Run{g.cell(0, j0, k), (j1 - j0 - 1) * g.padded(0) + nx, g.padded(0), nx, 0};
+  };
+  const int count = nz * parts;
 #pragma omp parallel
   {
-#pragma omp for collapse(2) schedule(static) nowait
-    for (int k = 0; k < nz; ++k)
-      for (int part = 0; part < parts; ++part) {
-        const int j0 = part * ny / parts, j1 = (part + 1) * ny / parts;
-        if (j0 == j1) continue;
-        const Run r{g.cell(0, j0, k), (j1 - j0 - 1) * g.padded(0) + nx, g.padded(0), nx, 0};
-        run(a.src.data(), a.dst.data(), a.node_type, r, off, a.omega_plus, a.omega_minus,
-            a.force[0], a.force[1], a.force[2], a.rho0, a.moments, a.pull_corrections);
-      }
+    const auto [t, nt] = team_member();
+    const int i0 = int(std::ptrdiff_t(count) * t / nt), i1 = int(std::ptrdiff_t(count) * (t + 1) / nt);
+    PreparedCells prepared;
+    if (prepare) {
+      const auto start = [&](int i) { return i < count ? run_of(i).first : kNoCell; };
+      prepared = PreparedCells(preparation, t == 0 ? 0 : start(i0), start(i1));
+#pragma omp barrier
+    }
+    for (int i = i0; i < i1; ++i) {
+      const Run r = run_of(i);
+      if (r.length == 0) continue;
+      run(a.src.data(), a.dst.data(), a.node_type, r, off, a.omega_plus, a.omega_minus,
+          a.force[0], a.force[1], a.force[2], a.rho0, a.moments, a.pull_corrections, prepared);
+    }
     // Before the region's closing barrier: every thread's runs are in memory after it.
     detail::streaming_store_fence();
   }

@@ -323,10 +323,8 @@ void FluidSolver::keep_node_moments() {
 }
 
 void FluidSolver::correct_pulls_in_next_step(const std::uint32_t* cell, const double* defect,
-                                             std::size_t count) {
-  pull_corrections_.cell = cell;
-  pull_corrections_.defect = defect;
-  pull_corrections_.count = count;
+                                             std::size_t count, PullPreparation preparation) {
+  pull_corrections_ = PullCorrections{cell, defect, count, preparation};
 }
 
 void FluidSolver::refresh_node_moments(std::size_t cell) {

@@ -166,6 +166,11 @@ PoreOptions parse_pore_options(const std::vector<std::string>& args) {
         fail("keyword 'mass_correction' = '" + v + "': must be yes, sweep, kernel or no");
       o.mass_correction = v != "no" && v != "off";
       o.mass_correction_in_kernel = v != "sweep";
+    } else if (key == "moving_walls") {
+      const std::string v = words.text(key);
+      if (v != "kernel" && v != "sweep")
+        fail("keyword 'moving_walls' = '" + v + "': must be 'kernel' or 'sweep'");
+      o.moving_walls_in_kernel = v == "kernel";
     } else if (key == "reference_pressure") {
       const std::string v = words.text(key);
       if (v != "remove" && v != "keep")
@@ -222,7 +227,7 @@ PoreOptions parse_pore_options(const std::vector<std::string>& args) {
 
 const char* pore_options_usage() {
   return "dx, rho, nu, n_dem, magic, scene (pore|voxels), origin, lateral, velocity, "
-         "pressure_loss, boundary, mass_correction, reference_pressure, substep_force, rotation, lubrication, lubrication_cutoff, deposit_region, deposit_speed, burst_drop, "
+         "pressure_loss, boundary, mass_correction, moving_walls, reference_pressure, substep_force, rotation, lubrication, lubrication_cutoff, deposit_region, deposit_speed, burst_drop, "
          "burst_window, burst_deposits, burst_file, deposit_speeds, vtk, "
          "checkpoint, checkpoint_keep";
 }

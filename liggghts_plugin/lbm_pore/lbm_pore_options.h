@@ -35,6 +35,10 @@ struct PoreOptions {
   // (coupling::SphereCouplingOptions::correct_mass_in_kernel); 'sweep': in the moving walls'
   // sweep, slower, the same bits.
   bool mass_correction_in_kernel = true;
+  // 'kernel' (the default): the moving walls' links themselves applied in the collide-stream's
+  // pass, where the correction is and the scheme is mls (coupling::SphereCouplingOptions::
+  // moving_walls_in_kernel); 'sweep': in the sweep before it, slower, the same bits.
+  bool moving_walls_in_kernel = true;
   // The momentum exchange keeps each link's reference-pressure share (the paper's Eq. 2 read
   // literally: a particle touching a wall is pressed into it by p0 on its unlinked surface)
   // or removes it (the default; coupling/force/momentum_exchange.h).

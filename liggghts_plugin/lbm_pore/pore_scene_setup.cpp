@@ -202,6 +202,7 @@ coupling::SphereCouplingOptions coupling_options(const PoreOptions& o) {
   co.wall_scheme = lbm::moving_wall::parse(o.boundary);
   co.conserve_link_mass = o.mass_correction;
   co.correct_mass_in_kernel = o.mass_correction_in_kernel;
+  co.moving_walls_in_kernel = o.moving_walls_in_kernel;
   co.reference_pressure =
       o.keep_reference_pressure ? coupling::ReferencePressure::kKept : coupling::ReferencePressure::kRemoved;
   return co;
@@ -291,9 +292,13 @@ std::string setup_summary(const PoreOptions& o, const coupling::UnitConversion& 
     n += std::snprintf(text + n, sizeof text - n,
                        "fix lbm/pore: pressure loss %g = %.4g lattice (density difference %.3g)\n", o.drive_value,
                        drive.pressure_loss, 3.0 * drive.pressure_loss);
-  n += std::snprintf(text + n, sizeof text - n, "fix lbm/pore: moving walls %s (mass correction %s), lubrication %s (cutoff %g cells)\n",
-                     o.boundary.c_str(),
-                     !o.mass_correction ? "off" : o.mass_correction_in_kernel ? "in the kernel's pass" : "in the sweep", o.lubrication ? "on" : "off", o.lubrication_cutoff);
+  const bool links_in_kernel =
+      o.moving_walls_in_kernel && o.mass_correction && o.mass_correction_in_kernel && o.boundary == "mls";
+  n += std::snprintf(text + n, sizeof text - n,
+                     "fix lbm/pore: moving walls %s %s (mass correction %s), lubrication %s (cutoff %g cells)\n",
+                     o.boundary.c_str(), links_in_kernel ? "in the kernel's pass" : "in the sweep",
+                     !o.mass_correction ? "off" : o.mass_correction_in_kernel ? "in the kernel's pass" : "in the sweep",
+                     o.lubrication ? "on" : "off", o.lubrication_cutoff);
   if (bytes_per_node > 0.0)
     std::snprintf(text + n, sizeof text - n,
                   "fix lbm/pore: memory %.0f bytes per lattice node (fluid %.0f, particle coupling %.0f)\n",

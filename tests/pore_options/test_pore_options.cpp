@@ -72,6 +72,15 @@ TEST(PoreOptions, MassCorrectionInTheKernel) {
                    .correct_mass_in_kernel);
 }
 
+TEST(PoreOptions, MovingWallsInTheKernel) {
+  EXPECT_TRUE(lbm_pore::coupling_options(lbm_pore::parse_pore_options(split("dx 1" + kScene)))
+                  .moving_walls_in_kernel);
+  EXPECT_TRUE(lbm_pore::coupling_options(lbm_pore::parse_pore_options(split("dx 1 moving_walls kernel" + kScene)))
+                  .moving_walls_in_kernel);
+  EXPECT_FALSE(lbm_pore::coupling_options(lbm_pore::parse_pore_options(split("dx 1 moving_walls sweep" + kScene)))
+                   .moving_walls_in_kernel);
+}
+
 TEST(PoreOptions, BadValuesNameTheKeywordAndRange) {
   EXPECT_NE(error_of("dx -1" + kScene).find("'dx' = '-1': must be a number in (0, inf]"),
             std::string::npos);
@@ -82,6 +91,8 @@ TEST(PoreOptions, BadValuesNameTheKeywordAndRange) {
             std::string::npos);
   EXPECT_NE(error_of("dx 1 colour red" + kScene).find("unknown keyword 'colour'"), std::string::npos);
   EXPECT_NE(error_of("dx 1 mass_correction 1" + kScene).find("'mass_correction' = '1': must be yes, sweep, kernel or no"),
+            std::string::npos);
+  EXPECT_NE(error_of("dx 1 moving_walls fused" + kScene).find("'moving_walls' = 'fused': must be 'kernel' or 'sweep'"),
             std::string::npos);
   EXPECT_NE(error_of("dx 1 reference_pressure literal" + kScene).find("'reference_pressure' = 'literal': must be 'remove' or 'keep'"),
             std::string::npos);

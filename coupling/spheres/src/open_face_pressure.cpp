@@ -27,10 +27,10 @@ struct FaceLinks {
   int side;  // 0 inlet (the lattice's lower end along the drive axis), 1 outlet
   double rho_gauge;
 
-  // The links of sphere (centre c, radius R) that cross this face: from a node x outside the
-  // sphere to x + c_q inside it (the mapping's test, |.|^2 < R^2), with x or x + c_q beyond the
-  // face. Added to `force` and `torque`; returns how many.
-  std::size_t add(const Vec3& c, double R, Vec3& force, Vec3& torque) const {
+  // The links of sphere p (centre c, radius R) that cross this face: from a node x outside
+  // the sphere to x + c_q inside it (the mapping's test, |.|^2 < R^2), with x or x + c_q
+  // beyond the face. Their pushes appended to `pushes`; returns how many links.
+  std::size_t add(std::size_t p, const Vec3& c, double R, std::vector<OpenFacePush>& pushes) const {
     const lbm::Decomposition& d = solver.decomposition();
     const lbm::BlockLayout& layout = solver.layout();
     const int a = face.axis;
@@ -75,11 +75,7 @@ struct FaceLinks {
             const Vec3 F{push * L::c[q][0], push * L::c[q][1], push * L::c[q][2]};
             const double s = link_fraction(dx, L::c[q], R);
             const Vec3 arm{dx[0] + s * L::c[q][0], dx[1] + s * L::c[q][1], dx[2] + s * L::c[q][2]};
-            const Vec3 t = cross(arm, F);
-            for (int k = 0; k < 3; ++k) {
-              force[k] += F[k];
-              torque[k] += t[k];
-            }
+            pushes.push_back({p, F, cross(arm, F)});
           }
         }
     return added;
@@ -87,8 +83,9 @@ struct FaceLinks {
 };
 }  // namespace
 
-std::size_t add_open_face_pressure(const ParticleView& view, const lbm::FluidSolver& solver,
-                                   double rho_gauge, HydrodynamicLoads& loads) {
+std::size_t record_open_face_pressure(const ParticleView& view, const lbm::FluidSolver& solver,
+                                      double rho_gauge, std::vector<OpenFacePush>& pushes) {
+  pushes.clear();
   const std::optional<lbm::OpenFace> faces[2] = {solver.open_face(0), solver.open_face(1)};
   if (!faces[0] && !faces[1]) return 0;  // this rank holds neither face
   const int a = solver.drive().axis;
@@ -106,8 +103,24 @@ std::size_t add_open_face_pressure(const ParticleView& view, const lbm::FluidSol
     seen.push_back(id);
     for (int side = 0; side < 2; ++side)
       if (near[side])
-        added += FaceLinks{solver, *faces[side], side, rho_gauge}.add(c, R, loads.force[p], loads.torque[p]);
+        added += FaceLinks{solver, *faces[side], side, rho_gauge}.add(p, c, R, pushes);
   }
+  return added;
+}
+
+void add_open_face_pushes(const std::vector<OpenFacePush>& pushes, HydrodynamicLoads& loads) {
+  for (const OpenFacePush& push : pushes)
+    for (int k = 0; k < 3; ++k) {
+      loads.force[push.particle][k] += push.force[k];
+      loads.torque[push.particle][k] += push.torque[k];
+    }
+}
+
+std::size_t add_open_face_pressure(const ParticleView& view, const lbm::FluidSolver& solver,
+                                   double rho_gauge, HydrodynamicLoads& loads) {
+  std::vector<OpenFacePush> pushes;
+  const std::size_t added = record_open_face_pressure(view, solver, rho_gauge, pushes);
+  add_open_face_pushes(pushes, loads);
   return added;
 }
 

@@ -88,7 +88,13 @@ void SphereCoupling::set_particle_reach(double view_reach, double radius_bound) 
   ghost_moments_near_spheres_ = view_reach >= radius_bound + kGhostMomentMargin;
 }
 
-void SphereCoupling::apply_moving_walls_and_force(const ParticleView& view) {
+bool SphereCoupling::moving_walls_in_kernel(const lbm::NodeMomentField* field) const {
+  return options_.moving_walls_in_kernel && options_.conserve_link_mass &&
+         options_.correct_mass_in_kernel &&
+         options_.wall_scheme == lbm::MovingWallScheme::kMeiLuoShyy && field != nullptr;
+}
+
+void SphereCoupling::apply_moving_walls(const ParticleView& view) {
   const double rho0 = solver_.parameters().rho0;
   const bool conserve = options_.conserve_link_mass;
   // Received by this step's exchange_halo, or none (a host that exchanged by itself).
@@ -103,11 +109,17 @@ void SphereCoupling::apply_moving_walls_and_force(const ParticleView& view) {
   {
     StageTimer t(times_.moving_walls);
     build_sphere_links(mapping_, view, solver_.node_types(), links_, &link_scratch_);
-    if (conserve) {
+    links_in_kernel_ = moving_walls_in_kernel(field);
+    if (links_in_kernel_) {
+      // Left to the next collide_stream's pass (lbm/moving_wall/link_sweep.h, KernelLinks):
+      // the populations and defects of the links are complete after it.
+      kernel_links_.begin(links_.links, solver_, *field, link_sweep_, link_populations_,
+                          defect_per_link_);
+    } else if (conserve) {
       // The moving walls, their mass defect and its correction in one sweep over the lattice
       // (lbm/moving_wall/link_sweep.h); the correction moves no momentum, and the momentum
-      // exchange below reads the returned populations as the moving walls recorded them, so
-      // the force is the scheme's own.
+      // exchange reads the returned populations as the moving walls recorded them, so the
+      // force is the scheme's own.
       link_defect_ = lbm::moving_wall::apply_links_and_restore_mass(
           links_.links, options_.wall_scheme, solver_, moment_cache_, link_sweep_,
           link_populations_, defect_per_link_, ghosts, field, options_.correct_mass_in_kernel);
@@ -116,18 +128,30 @@ void SphereCoupling::apply_moving_walls_and_force(const ParticleView& view) {
                        &link_populations_, ghosts);
       link_defect_ = lbm::moving_wall::link_mass_defect(links_.links, rho0, link_populations_);
     }
-    surface_mass_ = lbm::moving_wall::moving_surface_mass(links_.links, rho0) +
-                    (conserve ? 0.0 : link_defect_.net);
   }
+  StageTimer t(times_.force);
+  // The fluid beyond the open faces on the spheres that reach them (the same gauge), read
+  // before the open boundaries and the collide-stream change the faces' densities.
+  record_open_face_pressure(view, solver_, gauge_density(options_.reference_pressure, rho0),
+                            open_face_pushes_);
+  num_particles_ = view.num_total;
   ++link_counts_.steps;
   link_counts_.links += static_cast<long long>(links_.links.size());
+}
+
+void SphereCoupling::exchange_momentum() {
+  const double rho0 = solver_.parameters().rho0;
+  if (links_in_kernel_) {
+    StageTimer t(times_.moving_walls);
+    link_defect_ = lbm::moving_wall::sum_link_defects(defect_per_link_);
+  }
+  surface_mass_ = lbm::moving_wall::moving_surface_mass(links_.links, rho0) +
+                  (options_.conserve_link_mass ? 0.0 : link_defect_.net);
   StageTimer t(times_.force);
-  loads_.reset(view.num_total);
+  loads_.reset(num_particles_);
   add_momentum_exchange(links_, link_populations_, options_.momentum_exchange, rho0, loads_,
                         options_.reference_pressure);
-  // The fluid beyond the open faces on the spheres that reach them (the same gauge).
-  add_open_face_pressure(view, solver_, gauge_density(options_.reference_pressure, rho0),
-                         loads_);
+  add_open_face_pushes(open_face_pushes_, loads_);
 }
 
 void SphereCoupling::step(const ParticleView& view) {
@@ -140,13 +164,16 @@ void SphereCoupling::step(const ParticleView& view) {
     StageTimer t(times_.static_walls);
     solver_.apply_wall_bounce_back();
   }
-  apply_moving_walls_and_force(view);
+  apply_moving_walls(view);
   {
     StageTimer t(times_.open_boundaries);
     solver_.apply_open_boundaries();
   }
-  StageTimer t(times_.collide_stream);
-  solver_.collide_stream();
+  {
+    StageTimer t(times_.collide_stream);
+    solver_.collide_stream();
+  }
+  exchange_momentum();
 }
 
 void SphereCoupling::add_loads(std::size_t count, double* force, double* torque) const {

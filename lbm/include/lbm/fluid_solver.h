@@ -166,7 +166,10 @@ class FluidSolver {
   // pass (lbm/pull_correction.h: `count` entries, cell ascending, a node's consecutive): the
   // moving walls' link mass correction, the same bits as written into the slots before it.
   // The arrays must live until then; nothing else may read those nodes' slots in between.
-  void correct_pulls_in_next_step(const std::uint32_t* cell, const double* defect, std::size_t count);
+  // With a `preparation`, the kernel has the entries written (and what else the nodes pull
+  // prepared) in its own pass, a reach ahead of the cells it computes (PullPreparation).
+  void correct_pulls_in_next_step(const std::uint32_t* cell, const double* defect, std::size_t count,
+                                  PullPreparation preparation = {});
 
   // Macroscopic values at a local cell, from the stored post-collision populations:
   // rho = sum f, rho u = sum c f - F/2 (the Guo forcing shift undone).

@@ -15,10 +15,26 @@
 
 namespace lbm {
 
+// Work the kernel has done for it in its own pass, just before it pulls: the entries of the
+// nodes in [from, to) written (`defect`), and the slots those nodes pull prepared (the moving
+// walls' returning populations: lbm/moving_wall/link_sweep.h, KernelLinks), while the kernel
+// streams through their neighbourhood. What prepare reads of a node x lies within `reach`
+// cells of x and must be what the kernel had not yet written in this pass; so the kernel
+// prepares x before it computes any cell in [x - reach, x + reach): on each thread a
+// reach ahead of the block it is about to compute, and the nodes within a reach of a thread's
+// ends before any thread computes (the threads' ranges are disjoint; prepare is called with
+// disjoint ranges from several threads at once).
+struct PullPreparation {
+  void (*prepare)(const void* context, std::size_t from, std::size_t to) = nullptr;
+  const void* context = nullptr;
+  std::size_t reach = 0;  // in cells
+};
+
 struct PullCorrections {
   const std::uint32_t* cell = nullptr;  // ascending; a node's entries consecutive
   const double* defect = nullptr;       // one per entry
   std::size_t count = 0;                // none where 0
+  PullPreparation preparation;          // where prepare is null, the entries are written
 };
 
 // The entries of the nodes x in [first, last) taken off what they pull, pulled[p][x - first]

@@ -140,6 +140,29 @@ std::size_t apply_node(const LinkSweep& order, std::size_t i, std::size_t end,
   return i;
 }
 
+// The nodes at sorted positions [i, end) that are (`open`) or are not next to an open face,
+// each through apply_node and then restorer.remove_node: with the kernel's deferral, the
+// entries of a node away from the open faces are written, and a node next to one is
+// corrected at once (its entries 0). For KernelLinks (link_sweep.h): the open faces' nodes
+// before the kernel, the others in its pass.
+template <class Scheme>
+void apply_nodes(const LinkSweep& order, std::size_t i, std::size_t end, bool open,
+                 const Scheme& scheme, const DirectionOffsets& offsets, const LinkSlots& slots,
+                 double rho0, const LinkMassRestorer& restorer, PopulationField& f,
+                 LinkPopulations* pops, double* defect) {
+  const std::uint32_t* const cell = order.sorted_cells();
+  while (i != end) {
+    const std::uint32_t x = cell[i];
+    std::size_t node_end = i + 1;
+    while (node_end != end && cell[node_end] == x) ++node_end;
+    if (restorer.next_to_open(x) == open) {
+      apply_node(order, i, node_end, scheme, offsets, slots, rho0, f, pops, defect);
+      restorer.remove_node(x, defect, order.ids() + i, order.ids() + node_end);
+    }
+    i = node_end;
+  }
+}
+
 // The correction of block c's nodes, node by node: each node's 19 slots written once, with
 // the defects of its links taken off in link order (LinkMassRestorer::remove_node).
 inline void correct_block(const LinkSweep& order, std::size_t c, const LinkMassRestorer& restorer,
@@ -243,6 +266,10 @@ void apply(const std::vector<BoundaryLink>& links, const Scheme& scheme, const B
   template void sweep<Scheme>(const std::vector<BoundaryLink>&, const LinkSweep&, const Scheme&, \
                               const BlockLayout&, double, const LinkMassRestorer&,               \
                               PopulationField&, std::vector<LinkPopulations>&,                   \
-                              std::vector<double>&, int)
+                              std::vector<double>&, int);                                        \
+  template void apply_nodes<Scheme>(const LinkSweep&, std::size_t, std::size_t, bool,            \
+                                    const Scheme&, const DirectionOffsets&, const LinkSlots&,    \
+                                    double, const LinkMassRestorer&, PopulationField&,           \
+                                    LinkPopulations*, double*)
 
 }  // namespace lbm::moving_wall

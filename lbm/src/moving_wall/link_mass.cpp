@@ -30,6 +30,12 @@ LinkMassDefect link_mass_defect(const std::vector<BoundaryLink>& links, double r
   return total;
 }
 
+LinkMassDefect sum_link_defects(const std::vector<double>& per_link) {
+  LinkMassDefect total;
+  for (const double d : per_link) total.add(d);
+  return total;
+}
+
 double moving_surface_mass(const std::vector<BoundaryLink>& links, double rho0) {
   double mass = 0.0;
   for (const BoundaryLink& link : links) mass -= wall_term(link.q, rho0, link.wall_velocity);

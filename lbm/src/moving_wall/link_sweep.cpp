@@ -96,9 +96,7 @@ LinkMassDefect apply_links_and_restore_mass(const std::vector<BoundaryLink>& lin
   }
   if (correct_in_kernel)
     solver.correct_pulls_in_next_step(order.sorted_cells(), order.deferred_defects().data(), links.size());
-  LinkMassDefect total;
-  for (const double d : per_link) total.add(d);
-  return total;
+  return sum_link_defects(per_link);
 }
 
 }  // namespace lbm::moving_wall

@@ -1,6 +1,10 @@
 #include "lbm/moving_wall/mei_luo_shyy.h"
 
+#include <algorithm>
+#include <cstdlib>
+
 #include "lbm/collide_stream.h"
+#include "lbm/fluid_solver.h"
 #include "lbm/node_type.h"
 #include "link_loop.h"
 
@@ -50,5 +54,69 @@ double MeiLuoShyy::returning_population(const BoundaryLink& link, std::ptrdiff_t
 }
 
 LBM_MOVING_WALL_INSTANTIATE_LOOPS(MeiLuoShyy);
+
+// KernelLinks (link_sweep.h) lives here so that the scheme's formula is inlined into the
+// kernel's preparation as into the sweep, under this file's options (the same roundings).
+struct KernelLinks::State {
+  const LinkSweep& order;
+  std::size_t num_links;
+  MeiLuoShyy scheme;
+  DirectionOffsets offsets;
+  LinkSlots slots;
+  LinkMassRestorer restorer;
+  PopulationField* f;
+  LinkPopulations* populations;
+  double* defect;
+
+  State(const LinkSweep& order, std::size_t num_links, const MeiLuoShyy& scheme,
+        FluidSolver& solver, LinkPopulations* populations, double* defect, double* deferred)
+      : order(order),
+        num_links(num_links),
+        scheme(scheme),
+        offsets(solver.layout()),
+        slots(offsets, solver.populations()),
+        restorer(solver.layout(), solver.node_types(), solver.populations(), {order.ids(), deferred}),
+        f(&solver.populations()),
+        populations(populations),
+        defect(defect) {}
+
+  // The nodes at sorted positions [i, end) that are (`open`) or are not next to an open face.
+  void apply(std::size_t i, std::size_t end, bool open) const {
+    apply_nodes(order, i, end, open, scheme, offsets, slots, scheme.rho0, restorer, *f,
+                populations, defect);
+  }
+  // PullPreparation::prepare: the nodes in cells [from, to) away from the open faces.
+  static void prepare(const void* context, std::size_t from, std::size_t to) {
+    const State& s = *static_cast<const State*>(context);
+    const std::uint32_t* const cells = s.order.sorted_cells();
+    const std::uint32_t* const end = cells + s.num_links;
+    const std::uint32_t* const lo = std::lower_bound(cells, end, from, [](std::uint32_t c, std::size_t v) { return c < v; });
+    const std::uint32_t* const hi = std::lower_bound(lo, end, to, [](std::uint32_t c, std::size_t v) { return c < v; });
+    s.apply(std::size_t(lo - cells), std::size_t(hi - cells), false);
+  }
+};
+
+KernelLinks::KernelLinks() = default;
+KernelLinks::~KernelLinks() = default;
+
+void KernelLinks::begin(const std::vector<BoundaryLink>& links, FluidSolver& solver,
+                        const NodeMomentField& field, LinkSweep& order,
+                        std::vector<LinkPopulations>& populations, std::vector<double>& per_link) {
+  const std::size_t n = links.size();
+  order.sort(links, solver.layout());
+  populations.resize(n);
+  per_link.resize(n);
+  order.deferred_defects().resize(n);
+  const MeiLuoShyy scheme{solver.parameters().rho0, 1.0 / solver.trt().omega_plus,
+                          solver.parameters().body_force, &solver.node_types(), nullptr, 0, &field};
+  state_ = std::make_unique<State>(order, n, scheme, solver, populations.data(), per_link.data(),
+                                   order.deferred_defects().data());
+  state_->apply(0, n, true);
+  // What a node's links read and write lies within one link of it (x + c_q, x - c_q).
+  std::size_t reach = 0;
+  for (const std::ptrdiff_t of : state_->offsets.of) reach = std::max(reach, std::size_t(std::abs(of)));
+  solver.correct_pulls_in_next_step(order.sorted_cells(), order.deferred_defects().data(), n,
+                                    PullPreparation{&State::prepare, state_.get(), reach});
+}
 
 }  // namespace lbm::moving_wall

@@ -1,11 +1,15 @@
 #pragma once
 // One coupled fluid step with resolved moving spheres, as a named pipeline of stages
 // (waLBerla's time loop): map -> refill -> exchange_halo -> static walls -> moving walls
-// with the link mass correction -> momentum exchange -> open boundaries -> collide_stream.
+// with the link mass correction -> open boundaries -> collide_stream -> momentum exchange.
+// By default the moving walls' links are applied inside the collide-stream's pass
+// (SphereCouplingOptions::moving_walls_in_kernel), so the momentum exchange, which reads
+// what they recorded, comes after it.
 #include "coupling/boundary/ghost_moment_cells.h"
 #include "coupling/boundary/sphere_links.h"
 #include "coupling/boundary/whole_ghost_axes.h"
 #include "coupling/force/momentum_exchange.h"
+#include "coupling/force/open_face_pressure.h"
 #include "coupling/mapping/sphere_mapping.h"
 #include "coupling/particle_view.h"
 #include "coupling/reconstruction/refill.h"
@@ -34,6 +38,12 @@ struct SphereCouplingOptions {
   // node's 19 populations (the same values bit for bit; which is faster depends on the load:
   // bench_coupling_stages, bench_paper_run).
   bool kernel_moments = true;
+  // The moving walls themselves (the links' returning populations and their defects) taken
+  // in that pass too, each node's links just ahead of the cells the kernel computes
+  // (lbm::moving_wall::KernelLinks): the same operations on the same values, the same bits,
+  // one pass over the boundary nodes' populations instead of two. Where Mei-Luo-Shyy reads
+  // the kernel's moments with the correction in the kernel; otherwise the sweep.
+  bool moving_walls_in_kernel = true;
 };
 
 // Wall-clock seconds spent in each stage, accumulated over steps (coupling/stage_clock.h, the
@@ -43,7 +53,7 @@ struct StageTimes {
          force = 0.0, open_boundaries = 0.0, collide_stream = 0.0;
 };
 
-// The links of the moving surfaces summed over `steps` calls of apply_moving_walls_and_force
+// The links of the moving surfaces summed over `steps` calls of apply_moving_walls
 // on this rank: the work of the coupling stages, which cost per link.
 struct LinkCounts {
   long long steps = 0, links = 0;
@@ -78,9 +88,15 @@ class SphereCoupling {
   // The populations crossing each face, and on the axes map_and_refill marked the moments
   // of the ghost nodes (four values each instead of the other 14 populations, the same
   // result: lbm::moving_wall::exchange_ghost_moments), which the next
-  // apply_moving_walls_and_force reads.
+  // apply_moving_walls reads.
   void exchange_halo();
-  void apply_moving_walls_and_force(const ParticleView& view);
+  // The links of the spheres and their returning populations with the link mass correction
+  // (or, by default, their hand-over to the next collide_stream), and the push of the fluid
+  // beyond the open faces, before the open boundaries.
+  void apply_moving_walls(const ParticleView& view);
+  // After the collide_stream: the step's hydrodynamic loads (momentum exchange, paper Eq. 2,
+  // and the open faces' pushes), the link defect and the surface mass.
+  void exchange_momentum();
   // How far (cells) beyond this rank's owned box the views passed to step() hold every
   // particle, and a bound of every particle's radius (cells). When the first is at least
   // the second plus kGhostMomentMargin, every rank knows the spheres whose links read a
@@ -112,18 +128,27 @@ class SphereCoupling {
   const HaloCounts& halo_counts() const { return halo_counts_; }
   const LinkCounts& link_counts() const { return link_counts_; }
   const SphereCouplingOptions& options() const { return options_; }
+  // Whether the last step's links were applied in the collide-stream's pass (else the sweep).
+  bool links_in_kernel() const { return links_in_kernel_; }
   lbm::FluidSolver& solver() { return solver_; }
   const lbm::FluidSolver& solver() const { return solver_; }
 
  private:
   lbm::FluidSolver& solver_;
   SphereCouplingOptions options_;
+  // Whether a step's links go to the collide-stream's pass, given the moment field
+  // Mei-Luo-Shyy would read (none: the sweep).
+  bool moving_walls_in_kernel(const lbm::NodeMomentField* field) const;
   SphereMapping mapping_;
   MappingChange change_;                     // reused every step
   SphereLinks links_;
   std::vector<SphereLinks> link_scratch_;    // per-thread links, reused every step
   lbm::moving_wall::MomentCache moment_cache_;  // reused every step
   lbm::moving_wall::LinkSweep link_sweep_;      // reused every step
+  lbm::moving_wall::KernelLinks kernel_links_;  // what the kernel's pass reads, every step
+  bool links_in_kernel_ = false;                // this step's links left to the kernel
+  std::vector<OpenFacePush> open_face_pushes_;  // this step's, added after the kernel
+  std::size_t num_particles_ = 0;               // the view of this step's links
   HydrodynamicLoads loads_;
   MassChange mass_;
   lbm::moving_wall::LinkMassDefect link_defect_;

@@ -58,6 +58,9 @@ LinkMassDefect link_mass_defect(const std::vector<BoundaryLink>& links, double r
                                 const std::vector<LinkPopulations>& populations,
                                 std::vector<double>* per_link = nullptr);
 
+// The total of per-link defects (link_mass_defect's `per_link`), summed in link order.
+LinkMassDefect sum_link_defects(const std::vector<double>& per_link);
+
 // Mass the moving-wall terms of the links give the fluid in one step: -sum_l 6 w_q rho0 c_q.u_w,
 // what half-way bounce-back (and, with the correction above, every scheme) adds to the nodes
 // next to a moving surface. Over the links of a sphere whose surface is all in the fluid it
@@ -92,6 +95,9 @@ class LinkMassRestorer {
   // with each of the 19 slots read and written once (the same roundings).
   void remove_node(std::size_t fluid_cell, const double* defect, const std::uint32_t* first,
                    const std::uint32_t* last) const;
+  // Whether node x pulls a population from a ghost beyond an open face: the open boundary
+  // writes what x pulls before the kernel, so x's links and correction cannot wait for it.
+  bool next_to_open(std::size_t fluid_cell) const;
 
  private:
   // Slot f_p(x - c_p) is slot_[p][x], the node it belongs to x + from_[p].
@@ -103,7 +109,6 @@ class LinkMassRestorer {
   const std::uint8_t* type_;
   Deferral deferral_;
 
-  bool next_to_open(std::size_t fluid_cell) const;
   void remove_next_to_open(std::size_t fluid_cell, double defect) const;
 };
 

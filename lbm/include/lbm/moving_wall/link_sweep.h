@@ -15,6 +15,7 @@
 // in its links' order (the blocks keep link order within them, and a node's slots are pulled
 // by that node alone); the defect sum runs in link order.
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "lbm/block_layout.h"
@@ -90,5 +91,30 @@ LinkMassDefect apply_links_and_restore_mass(const std::vector<BoundaryLink>& lin
                                             const GhostMoments* ghosts = nullptr,
                                             const NodeMomentField* field = nullptr,
                                             bool correct_in_kernel = false);
+
+// The moving walls (Mei-Luo-Shyy on the kernel's moments) and the link mass correction in
+// the pass of the solver's next collide_stream, which has the boundary nodes' populations in
+// cache anyway: apply_links_and_restore_mass with `field` and correct_in_kernel, the same
+// operations on the same values in a different order of nodes, so the same bits.
+// begin() sorts the links, applies the nodes next to an open face at once (their correction
+// cannot wait: lbm/moving_wall/link_mass.h) and hands the others to the solver
+// (FluidSolver::correct_pulls_in_next_step with a PullPreparation): the kernel applies each
+// node's links and writes its correction's entries a reach of the lattice ahead of the
+// cells it computes, before any of them overwrites what the links read (lbm/pull_correction.h).
+// `populations` and `per_link` are complete once collide_stream has run; the total defect
+// is sum_link_defects(per_link) then. Nothing may read or write the lattice in between but
+// the open boundaries, which touch no node that begin() left to the kernel.
+class KernelLinks {
+ public:
+  KernelLinks();
+  ~KernelLinks();
+  void begin(const std::vector<BoundaryLink>& links, FluidSolver& solver,
+             const NodeMomentField& field, LinkSweep& order,
+             std::vector<LinkPopulations>& populations, std::vector<double>& per_link);
+
+ private:
+  struct State;  // what the kernel's preparation reads (mei_luo_shyy.cpp)
+  std::unique_ptr<State> state_;
+};
 
 }  // namespace lbm::moving_wall

@@ -28,9 +28,10 @@ inline void staged_step(coupling::SphereCoupling& c, const coupling::ParticleVie
   c.map_and_refill(view);
   solver.exchange_halo(which);
   solver.apply_wall_bounce_back();
-  c.apply_moving_walls_and_force(view);
+  c.apply_moving_walls(view);
   solver.apply_open_boundaries();
   solver.collide_stream();
+  c.exchange_momentum();
 }
 
 // Largest |a - b| over the owned populations of two solvers on the same block.

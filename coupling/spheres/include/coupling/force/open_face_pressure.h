@@ -1,6 +1,8 @@
 #pragma once
 // The push of the fluid beyond an open face (the drive's inlet or outlet) on the part of a
 // sphere that reaches past it, which the lattice does not hold.
+#include <vector>
+
 #include "coupling/force/momentum_exchange.h"
 #include "coupling/particle_view.h"
 #include "lbm/fluid_solver.h"
@@ -22,5 +24,17 @@ namespace coupling {
 // `loads` indexed like the view; returns the number of links added on this rank.
 std::size_t add_open_face_pressure(const ParticleView& view, const lbm::FluidSolver& solver,
                                    double rho_gauge, HydrodynamicLoads& loads);
+
+// The same in two steps, for a step that sums its loads after the collide-stream (which
+// changes the face densities this reads): the pushes of the missing links, in the order
+// add_open_face_pressure adds them, read now, and added to `loads` later, one by one, so the
+// loads are the same bits.
+struct OpenFacePush {
+  std::size_t particle;  // in the view
+  Vec3 force, torque;
+};
+std::size_t record_open_face_pressure(const ParticleView& view, const lbm::FluidSolver& solver,
+                                      double rho_gauge, std::vector<OpenFacePush>& pushes);
+void add_open_face_pushes(const std::vector<OpenFacePush>& pushes, HydrodynamicLoads& loads);
 
 }  // namespace coupling
