@@ -124,6 +124,7 @@ void fill_fluid_mask(const std::uint8_t* __restrict type, const Run& run, int st
 // end at once (before the barrier that precedes every thread's first block), then the
 // others a reach ahead of each block it computes.
 constexpr std::size_t kNoCell = ~std::size_t(0);
+constexpr std::size_t kPreparedBatch = 1024;
 class PreparedCells {
  public:
   PreparedCells() = default;  // nothing to prepare
@@ -136,7 +137,8 @@ class PreparedCells {
   }
   // Before the kernel computes cells below `end`.
   void before(std::size_t end) {
-    const std::size_t to = std::min(stop_, end + p_.reach);
+    if (end + p_.reach <= next_) return;
+    const std::size_t to = std::min(stop_, end + p_.reach + kPreparedBatch);
     if (to <= next_) return;
     p_.prepare(p_.context, next_, to);
     next_ = to;

@@ -45,13 +45,17 @@ struct FaceLinks {
     if (side == 0) to[a] = std::min(to[a], 0);
     else from[a] = std::max(from[a], last);
     const double R2 = R * R;
+    const double beyond_links = (R + 1.5) * (R + 1.5);
     std::size_t added = 0;
     int x[3];
     for (x[2] = from[2]; x[2] <= to[2]; ++x[2])
       for (x[1] = from[1]; x[1] <= to[1]; ++x[1])
         for (x[0] = from[0]; x[0] <= to[0]; ++x[0]) {
           const Vec3 dx{x[0] - c[0], x[1] - c[1], x[2] - c[2]};
-          if (dot(dx, dx) < R2) continue;  // inside: no link starts here
+          const double dx2 = dot(dx, dx);
+          if (dx2 < R2) continue;  // inside: no link starts here
+          // Farther than R + |c_q| (at most sqrt 2) from the centre: no link reaches inside.
+          if (dx2 >= beyond_links) continue;
           for (int q = 1; q < L::Q; ++q) {
             const Vec3 dw{dx[0] + L::c[q][0], dx[1] + L::c[q][1], dx[2] + L::c[q][2]};
             if (!(dot(dw, dw) < R2)) continue;

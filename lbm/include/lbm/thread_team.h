@@ -20,4 +20,13 @@ inline TeamMember team_member() {
 #endif
 }
 
+// The threads a parallel region started here would have (1 without OpenMP).
+inline int max_threads() {
+#ifdef _OPENMP
+  return omp_get_max_threads();
+#else
+  return 1;
+#endif
+}
+
 }  // namespace lbm

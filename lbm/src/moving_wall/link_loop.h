@@ -130,12 +130,14 @@ std::size_t apply_node(const LinkSweep& order, std::size_t i, std::size_t end,
     }
     const BoundaryLink& k = link[i];
     const int q = k.q;
-    const double back = returning_population(scheme, k, offsets.of[q], f, state);
-    Real& slot = slots.back[q][x];
-    slot = static_cast<Real>(back);
-    const LinkPopulations populations{slots.out[q][x], slot};
-    pops[id[i]] = populations;
-    defect[id[i]] = link_defect(k, rho0, populations);
+    const double out = slots.out[q][x];  // not the slot written below (direction -q)
+    const Real back = static_cast<Real>(returning_population(scheme, k, offsets.of[q], f, state));
+    slots.back[q][x] = back;
+    // Member by member: the values stay in registers for the defect.
+    LinkPopulations& recorded = pops[id[i]];
+    recorded.out = out;
+    recorded.back = back;
+    defect[id[i]] = link_defect(k, rho0, LinkPopulations{out, back});
   } while (++i != end && link[i].fluid_cell == x);
   return i;
 }

@@ -12,11 +12,6 @@ namespace {
 using L = D3Q19;
 }  // namespace
 
-// delta_l: what the link returned minus what half-way bounce-back would have returned.
-double link_defect(const BoundaryLink& link, double rho0, const LinkPopulations& populations) {
-  return populations.back - (populations.out - wall_term(link.q, rho0, link.wall_velocity));
-}
-
 LinkMassDefect link_mass_defect(const std::vector<BoundaryLink>& links, double rho0,
                                 const std::vector<LinkPopulations>& populations,
                                 std::vector<double>* per_link) {

@@ -1,11 +1,13 @@
 #include "lbm/moving_wall/mei_luo_shyy.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdlib>
 
 #include "lbm/collide_stream.h"
 #include "lbm/fluid_solver.h"
 #include "lbm/node_type.h"
+#include "lbm/thread_team.h"
 #include "link_loop.h"
 
 namespace lbm::moving_wall {
@@ -85,19 +87,36 @@ struct KernelLinks::State {
     apply_nodes(order, i, end, open, scheme, offsets, slots, scheme.rho0, restorer, *f,
                 populations, defect);
   }
+  // Seconds each thread spent in prepare in this step (a line each: written concurrently).
+  struct alignas(64) ThreadSeconds {
+    double value = 0.0;
+  };
+  mutable std::vector<ThreadSeconds> seconds;
+
   // PullPreparation::prepare: the nodes in cells [from, to) away from the open faces.
   static void prepare(const void* context, std::size_t from, std::size_t to) {
     const State& s = *static_cast<const State*>(context);
+    const auto start = std::chrono::steady_clock::now();
     const std::uint32_t* const cells = s.order.sorted_cells();
     const std::uint32_t* const end = cells + s.num_links;
     const std::uint32_t* const lo = std::lower_bound(cells, end, from, [](std::uint32_t c, std::size_t v) { return c < v; });
     const std::uint32_t* const hi = std::lower_bound(lo, end, to, [](std::uint32_t c, std::size_t v) { return c < v; });
     s.apply(std::size_t(lo - cells), std::size_t(hi - cells), false);
+    const std::size_t t = std::size_t(team_member().index);
+    if (t < s.seconds.size())
+      s.seconds[t].value += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
 };
 
 KernelLinks::KernelLinks() = default;
 KernelLinks::~KernelLinks() = default;
+
+double KernelLinks::prepared_seconds() const {
+  double longest = 0.0;
+  if (state_)
+    for (const State::ThreadSeconds& s : state_->seconds) longest = std::max(longest, s.value);
+  return longest;
+}
 
 void KernelLinks::begin(const std::vector<BoundaryLink>& links, FluidSolver& solver,
                         const NodeMomentField& field, LinkSweep& order,
@@ -111,6 +130,7 @@ void KernelLinks::begin(const std::vector<BoundaryLink>& links, FluidSolver& sol
                           solver.parameters().body_force, &solver.node_types(), nullptr, 0, &field};
   state_ = std::make_unique<State>(order, n, scheme, solver, populations.data(), per_link.data(),
                                    order.deferred_defects().data());
+  state_->seconds.resize(std::size_t(max_threads()));
   state_->apply(0, n, true);
   // What a node's links read and write lies within one link of it (x + c_q, x - c_q).
   std::size_t reach = 0;

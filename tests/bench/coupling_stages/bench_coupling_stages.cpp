@@ -12,11 +12,14 @@
 // the same checksum from two builds means the same bits.
 //
 //   bench_coupling_stages [--steps N] [--repeat N] [--spheres N] [--evict-mb N] [--gather-moments]
-//                         [--correct-in-sweep]
+//                         [--correct-in-sweep] [--links-in-sweep]
 // (--gather-moments: the moving walls gather the moments from the populations instead of
 // reading the field the kernel keeps, SphereCouplingOptions::kernel_moments;
 // --correct-in-sweep: the link mass correction in the moving walls' sweep rather than the
-// kernel's pass, SphereCouplingOptions::correct_mass_in_kernel = false; --evict-mb N:
+// kernel's pass, SphereCouplingOptions::correct_mass_in_kernel = false; --links-in-sweep: the
+// moving walls' links in their sweep before the kernel, moving_walls_in_kernel = false (in the
+// kernel's pass, the default, the time the kernel spends applying them is booked to the moving
+// walls, KernelLinks::prepared_seconds); --evict-mb N:
 // N MiB of other data are written between two fluid steps, outside the timed stages, as the
 // DEM substeps of a full run do, so that each step starts with the lattice out of the
 // caches: 0, the default, keeps the caches of the last step)
@@ -93,11 +96,12 @@ double median(std::vector<double> v) {
 
 int main(int argc, char** argv) {
   int steps = 500, repeat = 5, spheres = 40, evict_mb = 0;
-  bool kernel_moments = true, correct_in_kernel = true;
+  bool kernel_moments = true, correct_in_kernel = true, links_in_kernel = true;
   for (int i = 1; i < argc; i += 2) {
     const std::string key = argv[i];
-    if (key == "--gather-moments" || key == "--correct-in-sweep") {
-      (key == "--gather-moments" ? kernel_moments : correct_in_kernel) = false;
+    if (key == "--gather-moments" || key == "--correct-in-sweep" || key == "--links-in-sweep") {
+      (key == "--gather-moments" ? kernel_moments : key == "--correct-in-sweep" ? correct_in_kernel
+                                                                                : links_in_kernel) = false;
       --i;
       continue;
     }
@@ -126,6 +130,7 @@ int main(int argc, char** argv) {
   coupling::SphereCouplingOptions options;
   options.kernel_moments = kernel_moments;
   options.correct_mass_in_kernel = correct_in_kernel;
+  options.moving_walls_in_kernel = links_in_kernel;
   coupling::SphereCoupling coupling(*solver, options);
   std::vector<char> other_data(std::size_t(evict_mb) << 20);
   double evicting = 0.0;  // seconds spent writing other_data, taken off the step's time

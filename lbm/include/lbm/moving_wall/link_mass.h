@@ -24,6 +24,7 @@
 // of accuracy is kept (the accuracy tests measure it). Purely local: every slot it writes is
 // pulled by x alone, so no halo exchange and no global sum; halo slots written are the
 // copies x pulls.
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -31,6 +32,7 @@
 #include "lbm/block_layout.h"
 #include "lbm/d3q19.h"
 #include "lbm/moving_wall/link_boundary.h"
+#include "lbm/moving_wall/moving_wall_scheme.h"
 #include "lbm/population_field.h"
 
 namespace lbm::moving_wall {
@@ -47,8 +49,26 @@ struct LinkMassDefect {
   }
 };
 
-// delta_l of one link from its populations (apply_links' `populations` output).
-double link_defect(const BoundaryLink& link, double rho0, const LinkPopulations& populations);
+// delta_l of one link from its populations (apply_links' `populations` output): what the
+// link returned minus what half-way bounce-back would have returned,
+//   back - (out - 6 w_q rho0 c_q.u_w).
+// Inline, so that the sweeps keep the two values in registers (through memory, the 16-byte
+// load of two 8-byte stores stalled every link). Its roundings are spelled out, so that every
+// file that inlines it gives the bits it has always had, whatever its contraction flags:
+// c_q.u_w is exact per product (c of 0 and +-1), and out - (6 w_q rho0) c_q.u_w is one fused
+// rounding where the machine has FMA (as the kernel flags' contraction made it).
+inline double link_defect(const BoundaryLink& link, double rho0, const LinkPopulations& populations) {
+  const int q = link.q;
+  const std::array<double, 3>& u = link.wall_velocity;
+  const double cu = D3Q19::c[q][0] * u[0] + D3Q19::c[q][1] * u[1] + D3Q19::c[q][2] * u[2];
+  const double weight = 6.0 * D3Q19::w[q] * rho0;
+#ifdef __FMA__
+  return populations.back - std::fma(-weight, cu, populations.out);
+#else
+  const double term = weight * cu;
+  return populations.back - (populations.out - term);
+#endif
+}
 
 // The defects of the links' populations as apply_links left them (its `populations`
 // output: no lattice access); per link into `per_link` if non-null (kept by the caller so

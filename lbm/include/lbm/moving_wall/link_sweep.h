@@ -111,6 +111,9 @@ class KernelLinks {
   void begin(const std::vector<BoundaryLink>& links, FluidSolver& solver,
              const NodeMomentField& field, LinkSweep& order,
              std::vector<LinkPopulations>& populations, std::vector<double>& per_link);
+  // After the collide_stream: the wall-clock seconds the kernel spent applying the links
+  // (the longest of its threads), which a host books to the moving walls, not the fluid.
+  double prepared_seconds() const;
 
  private:
   struct State;  // what the kernel's preparation reads (mei_luo_shyy.cpp)
