@@ -122,7 +122,8 @@ void fill_fluid_mask(const std::uint8_t* __restrict type, const Run& run, int st
 // [begin, end) from its first run to the next thread's (the first thread's from 0, the last's
 // to kNoCell), so that the shares cover every node once. The nodes within a reach of either
 // end at once (before the barrier that precedes every thread's first block), then the
-// others a reach ahead of each block it computes.
+// others at least a reach ahead of each block it computes, kPreparedBatch cells at a time
+// (before every block, a call per 32 nodes: no faster, the same bits).
 constexpr std::size_t kNoCell = ~std::size_t(0);
 constexpr std::size_t kPreparedBatch = 1024;
 class PreparedCells {
