@@ -5,7 +5,7 @@ timed from saved states of the paper's scene rather than from an empty box.
 The scene is examples/pore/in.pore (Table I read in d-units at 7.1 cells per d: a 90 x 40 x 40
 lattice, a pore of D = 25 cells, particles of d = 7 cells, N_DEM = 100) on 2 MPI ranks with
 one OpenMP thread each, the lattice split across the flow (-var procs "1 * 1": both ranks
-hold half of every region). Two states, each made once by running in.pore and kept (with its
+hold half of every region). Three states, each made once by running in.pore and kept (with its
 fluid checkpoints) in --states-dir, then read back for every timed run:
 
   steady   u_lattice 0.02, c_in 0.05, the reference pressure removed (in.pore's defaults when
@@ -20,11 +20,13 @@ fluid checkpoints) in --states-dir, then read back for every timed run:
            after 4 x 10^6 DEM steps, continued until at least 15 particles are deposited in
            the pore (deposits come and go in bursts: the state is the first such moment).
   paper    in.pore's defaults (the paper's regime: u_lattice 0.0025, the reference pressure
-           kept) after 8 x 10^6 DEM steps, continued until the box holds at least 100
-           particles with at least 15 deposited: particles queue upstream of the clogged pore.
+           kept) at the paper's highest concentration, c_in 0.1, after 8 x 10^6 DEM steps,
+           continued until the box holds at least 100 particles with at least 15 deposited:
+           particles queue upstream of the clogged pore.
 
-A state is remade when its files are missing or the driver cannot read them (a restart
-format change); --remake-states forces it. Each timed run resumes a state for
+A state is remade when its files are missing, when STATES gives it other knobs than it was
+made with (state.json), or when the driver cannot read them (a restart format change);
+--remake-states forces it. Each timed run resumes a state for
 --fluid-steps fluid steps (N_DEM DEM substeps each); the states are timed in turn, --repeat
 rounds, and the median and spread (min, max) of the rounds are printed. Per state:
 
@@ -74,6 +76,7 @@ usage: bench_paper_run.py --driver liggghts-lbm --script examples/pore/in.pore
 (--repeat 0 makes the missing states and times nothing.)
 """
 import argparse
+import json
 import os
 import re
 import shutil
@@ -97,9 +100,10 @@ STATES = {
                2000000, (50, 1)),
     "clogged": ({"u_lattice": 0.0025, "c_in": 0.05, "insert_period": 100, "reference_pressure": "remove"},
                 4000000, (0, 15)),
-    # in.pore's own defaults (the paper's regime: u_lattice 0.0025, the reference pressure
-    # kept), late in a run: particles queue upstream of the clogged pore.
-    "paper": ({"u_lattice": 0.0025, "reference_pressure": "keep"}, 8000000, (100, 15)),
+    # The paper's regime (in.pore's defaults: u_lattice 0.0025, the reference pressure kept)
+    # at the paper's highest concentration, c_in 0.1, late in a run: particles queue upstream
+    # of the clogged pore (at c_in 0.05 the box held 70 after 1.4 x 10^7 DEM steps).
+    "paper": ({"u_lattice": 0.0025, "reference_pressure": "keep", "c_in": 0.1}, 8000000, (100, 15)),
 }
 MAX_EXTRA_STEPS = 6000000  # a state that has not reached its load by then is reported as is
 
@@ -168,6 +172,17 @@ def state_load(folder):
     return rows[-1] if rows else None
 
 
+def state_is_current(state, folder):
+    """Whether `folder` holds the state as STATES defines it now: made to the end (its log
+    kept) with the knobs STATES gives it (state.json)."""
+    try:
+        with open(os.path.join(folder, "state.json")) as f:
+            knobs = json.load(f)
+    except (OSError, ValueError):
+        return False
+    return os.path.exists(os.path.join(folder, "state.log")) and knobs == STATES[state][0]
+
+
 def make_state(args, state, folder):
     """Runs in.pore until the state holds its load; keeps the newest restart file and the
     fluid checkpoints it names in `folder`."""
@@ -193,6 +208,8 @@ def make_state(args, state, folder):
         log += out
     with open(os.path.join(folder, "state.log"), "w") as f:
         f.write(log)
+    with open(os.path.join(folder, "state.json"), "w") as f:
+        json.dump(knobs, f)
     print(f"bench_paper_run: state '{state}' at DEM step {step}: {particles} particles, "
           f"{deposited:g} deposited", flush=True)
 
@@ -314,7 +331,7 @@ def main():
             sys.exit(f"bench_paper_run: unknown state '{state}'; known: {', '.join(STATES)}")
     folders = {s: os.path.join(os.path.abspath(args.states_dir), s) for s in states}
     for state, folder in folders.items():
-        if args.remake_states or not os.path.exists(os.path.join(folder, "state.log")):
+        if args.remake_states or not state_is_current(state, folder):
             make_state(args, state, folder)
     if args.repeat <= 0:  # --repeat 0: make the states only
         return
