@@ -278,7 +278,8 @@ def case_outlet_exit(h):
 def case_mpi_splits(h):
     """1 rank against 3 (processors 3 1 1) and 4 (2 2 1, 1 2 2; oversubscribed on 2 cores), and
     with the mass correction in the moving walls' sweep 1 rank against the kernel's pass (the
-    default: the same rows) and against 4.
+    default: the same rows) and against 4, and the links in a sweep against the kernel's pass
+    (the default: the same rows, on 1 rank and on 4).
     In in.transit a weak gravity along (0, 1, 1) makes particle 1 sink across y = 10 and
     z = 10 while the flow carries it across x = 10 and x = 15, so that it changes owner across
     an x, a y and a z face of the grids (checked in the serial run), passing near the y-z edge
@@ -303,9 +304,11 @@ def case_mpi_splits(h):
                 check(f"{name}_max_difference_{column}", worst < bound, f"{worst:.3g}",
                       f"< {bound:g} of its largest value over the run")
 
+    splits = {}
     for px, py, pz in ((3, 1, 1), (2, 2, 1), (1, 2, 2)):
         split = thermo_rows(h.run("in.transit", dict(variables, px=px, py=py, pz=pz), ranks=px * py * pz).output)
         compare(f"mpi_{px}{py}{pz}", serial, split, 1e-9)
+        splits[(px, py, pz)] = split
     # The link mass correction in the moving walls' sweep (mass_correction sweep) instead of
     # the kernel's pass (the default): the same operations on the same values, so the same
     # rows to the last digit printed, and split as closely.
@@ -314,6 +317,13 @@ def case_mpi_splits(h):
     compare("sweep_correction_against_kernel", serial, sweep, 0.0)
     split = thermo_rows(h.run("in.transit", dict(sweep_variables, px=2, py=2, pz=1), ranks=4).output)
     compare("sweep_correction_mpi_221", sweep, split, 1e-9)
+    # The moving walls' links in a sweep before the kernel (moving_walls sweep) instead of in
+    # its pass (the default): the same rows to the last digit printed, on 1 rank and split.
+    links_variables = dict(variables, fix_extra="moving_walls sweep")
+    links = thermo_rows(h.run("in.transit", dict(links_variables, px=1)).output)
+    compare("sweep_links_against_kernel", serial, links, 0.0)
+    split = thermo_rows(h.run("in.transit", dict(links_variables, px=1, py=2, pz=2), ranks=4).output)
+    compare("sweep_links_against_kernel_mpi_122", splits[(1, 2, 2)], split, 0.0)
 
 
 def case_restart(h):
