@@ -99,8 +99,9 @@ struct KernelLinks::State {
     const auto start = std::chrono::steady_clock::now();
     const std::uint32_t* const cells = s.order.sorted_cells();
     const std::uint32_t* const end = cells + s.num_links;
-    const std::uint32_t* const lo = std::lower_bound(cells, end, from, [](std::uint32_t c, std::size_t v) { return c < v; });
-    const std::uint32_t* const hi = std::lower_bound(lo, end, to, [](std::uint32_t c, std::size_t v) { return c < v; });
+    const auto below = [](std::uint32_t cell, std::size_t bound) { return cell < bound; };
+    const std::uint32_t* const lo = std::lower_bound(cells, end, from, below);
+    const std::uint32_t* const hi = std::lower_bound(lo, end, to, below);
     s.apply(std::size_t(lo - cells), std::size_t(hi - cells), false);
     const std::size_t t = std::size_t(team_member().index);
     if (t < s.seconds.size())
