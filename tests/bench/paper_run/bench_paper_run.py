@@ -65,14 +65,16 @@ On the states of --layouts (default: paper), per round:
         follows the faster)
 With --baseline-driver, each timed run is paired with one of that driver right before it
 on the same state: BENCH paper_run_<state>_vs_baseline [_min/_max] is the median of the
-pairs' ratios of the time per fluid step (below 1: --driver is faster).
+pairs' ratios of the time per fluid step (below 1: --driver is faster). --baseline-knobs
+NAME=VALUE,... gives the baseline's runs those in.pore knobs (with --driver itself when no
+--baseline-driver is given): two paths of one build, e.g. moving_walls=sweep.
 The stage and link figures are rank 0's (the end-of-run report of fix lbm/pore); a stage's
 time includes the waits for the other rank at its collective calls.
 
 usage: bench_paper_run.py --driver liggghts-lbm --script examples/pore/in.pore
                           [--states-dir DIR] [--remake-states] [--fluid-steps N] [--repeat N]
                           [--mpirun mpirun] [--states steady,clogged]
-                          [--baseline-driver liggghts-lbm]
+                          [--baseline-driver liggghts-lbm] [--baseline-knobs NAME=VALUE,...]
 (--repeat 0 makes the missing states and times nothing.)
 """
 import argparse
@@ -228,12 +230,13 @@ def resume_knobs(args, state, folder, work, layout=None):
     return scene_knobs(state, step + steps, extra)
 
 
-def time_state(args, state, folder, driver=None, ranks=RANKS, threads=1):
+def time_state(args, state, folder, driver=None, ranks=RANKS, threads=1, extra=None):
     """One timed run resuming the state (with `driver`, or --driver) on `ranks` ranks of
-    `threads` threads (the fluid checkpoint is read on any decomposition): fix lbm/pore's
-    report, parsed."""
+    `threads` threads (the fluid checkpoint is read on any decomposition), with the in.pore
+    knobs `extra` on top: fix lbm/pore's report, parsed."""
     with tempfile.TemporaryDirectory(prefix="bench_paper_run_") as work:
         knobs = resume_knobs(args, state, folder, work, None if ranks == RANKS else "1 1 1")
+        knobs.update(extra or {})
         code, out = run_scene(args, work, knobs, driver, ranks, threads)
     runs = RUN_LINE.findall(out)
     stages = STAGE_LINE.findall(out)
@@ -324,7 +327,15 @@ def main():
     parser.add_argument("--baseline-driver", default="",
                         help="another liggghts-lbm (e.g. a build of the code before a change), "
                              "timed on the same states in pairs with --driver")
+    parser.add_argument("--baseline-knobs", default="", metavar="NAME=VALUE,...",
+                        help="in.pore knobs of the baseline's runs (with --baseline-driver, or "
+                             "--driver itself): e.g. moving_walls=sweep pairs two paths of one build")
     args = parser.parse_args()
+    try:
+        baseline_knobs = dict(kv.split("=", 1) for kv in args.baseline_knobs.split(",") if kv)
+    except ValueError:
+        sys.exit(f"bench_paper_run: --baseline-knobs '{args.baseline_knobs}': must be NAME=VALUE,...")
+    paired = bool(args.baseline_driver or baseline_knobs)
     states = [s for s in args.states.split(",") if s]
     for state in states:
         if state not in STATES:
@@ -342,9 +353,10 @@ def main():
     throughput_ratios = {s: [] for s in layouts}
     for round_ in range(args.repeat):
         for state in states:
-            if args.baseline_driver:
+            if paired:
                 # Right before the run it is paired with: a load swing falls on both.
-                base = time_state(args, state, folders[state], args.baseline_driver)
+                base = time_state(args, state, folders[state], args.baseline_driver or None,
+                                  extra=baseline_knobs)
                 if base is None:
                     sys.exit(f"bench_paper_run: the baseline's timed run of state '{state}' failed")
             result = time_state(args, state, folders[state])
@@ -354,7 +366,7 @@ def main():
             if result is None:
                 sys.exit(f"bench_paper_run: the timed run of state '{state}' failed")
             results[state].append(result)
-            if args.baseline_driver:
+            if paired:
                 pair_ratios[state].append(result["fluid_step_ms"] / base["fluid_step_ms"])
                 print(f"bench_paper_run: round {round_ + 1}, state {state}, baseline: "
                       f"{base['fluid_step_ms']:.3f} ms per fluid step", flush=True)
