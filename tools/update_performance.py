@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Runs lbm-pore's benchmarks and rewrites their tables in doc/performance.md.
+"""Runs lbm-pore's benchmarks and rewrites their tables, doc/performance/<benchmark>.md.
 
     tools/update_performance.py                      # every benchmark (about 20 minutes on 2 cores)
     tools/update_performance.py bench_lbm bench_coupled       # only these
@@ -10,14 +10,11 @@ Each benchmark (a CMake target `bench_<what>`, tests/bench/) prints `BENCH <name
 <unit> [note]` lines. The script configures ./build if it is not configured yet (Release),
 builds each benchmark's target (the targets bench_paper_run, bench_coupled, bench_dem_substep
 and bench_features run their benchmark as they are built; bench_lbm and bench_contact are
-programs, run after the build), collects the BENCH lines and replaces, in doc/performance.md,
-the block between
-
-    <!-- performance:<benchmark>:begin ... -->   and   <!-- performance:<benchmark>:end -->
-
-with the command, the date, the machine and one row per figure: every table holds one run of
-one benchmark on one machine. Figures the run did not print (Palabos not found, one core
-only, no baseline) keep a row with "—". Nothing outside the markers changes. Run it on an
+programs, run after the build), collects the BENCH lines and writes doc/performance/<benchmark>.md:
+the command, the date, the machine and one row per figure, so every table holds one run of
+one benchmark on one machine (doc/performance.md says what each figure measures and links
+the pages). Figures the run did not print (Palabos not found, one core only, no baseline)
+keep a row with "—". Run it on an
 otherwise idle machine: the figures are timings.
 
 To record the BENCH lines of one run already made (the same format: a saved log, or `-` for
@@ -36,7 +33,12 @@ import subprocess
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-DOC = os.path.join(ROOT, "doc", "performance.md")
+DOC = os.path.join(ROOT, "doc", "performance.md")  # what each figure measures
+TABLES = os.path.join(ROOT, "doc", "performance")  # one generated page per benchmark
+
+
+def table_page(name):
+    return os.path.join(TABLES, f"{name}.md")
 BENCH_LINE = re.compile(r"^BENCH (\S+) (\S+) (\S+)(.*)$")
 
 # Goals the benchmarks are held to (their scripts print the same).
@@ -274,12 +276,13 @@ def block(name, figures, date, machine):
     return "\n".join(lines)
 
 
-def replace_block(page, name, new):
-    pattern = re.compile(rf"<!-- performance:{re.escape(name)}:begin.*?<!-- performance:{re.escape(name)}:end -->",
-                         re.S)
-    if not pattern.search(page):
-        sys.exit(f"update_performance: no markers for {name} in {DOC}")
-    return pattern.sub(lambda _: new, page)
+def write_table(name, new):
+    """The benchmark's page: a title, the way back to what its figures measure, the table."""
+    os.makedirs(TABLES, exist_ok=True)
+    with open(table_page(name), "w") as f:
+        f.write(f"# `{name}`: its figures\n\nWhat each figure measures, and the findings drawn from "
+                f"them: [../performance.md](../performance.md). This page is written by "
+                f"`tools/update_performance.py`.\n\n{new}\n")
 
 
 def main():
@@ -308,8 +311,6 @@ def main():
         run_logged(["cmake", "-S", ROOT, "-B", build_dir, "-DCMAKE_BUILD_TYPE=Release"], dict(os.environ))
     date = args.date or datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d")
     machine = args.machine or describe_machine(build_dir)
-    with open(DOC) as f:
-        page = f.read()
     for name in names:
         text = logged if args.from_log else run_benchmark(name, build_dir)
         figures = parse(text)
@@ -318,11 +319,10 @@ def main():
         new = block(name, figures, date, machine)
         if args.dry_run:
             print(new)
-        else:
-            page = replace_block(page, name, new)
-            with open(DOC, "w") as f:  # after each benchmark, so a later failure loses nothing
-                f.write(page)
-            print(f"update_performance: {name}: {len(figures)} figures written to {os.path.relpath(DOC, ROOT)}")
+        else:  # after each benchmark, so a later failure loses nothing
+            write_table(name, new)
+            print(f"update_performance: {name}: {len(figures)} figures written to "
+                  f"{os.path.relpath(table_page(name), ROOT)}")
 
 
 if __name__ == "__main__":
