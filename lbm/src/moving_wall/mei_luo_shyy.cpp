@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdlib>
+#include <optional>
 
 #include "lbm/collide_stream.h"
 #include "lbm/fluid_solver.h"
@@ -59,34 +60,39 @@ LBM_MOVING_WALL_INSTANTIATE_LOOPS(MeiLuoShyy);
 
 // KernelLinks (link_sweep.h) lives here so that the scheme's formula is inlined into the
 // kernel's preparation as into the sweep, under this file's options (the same roundings).
+// Allocated once; each step's part is rebuilt in place.
 struct KernelLinks::State {
-  const LinkSweep& order;
-  std::size_t num_links;
-  MeiLuoShyy scheme;
-  DirectionOffsets offsets;
-  LinkSlots slots;
-  LinkMassRestorer restorer;
-  PopulationField* f;
-  LinkPopulations* populations;
-  double* defect;
+  // What the kernel's preparation reads in one step.
+  struct Step {
+    const LinkSweep& order;
+    std::size_t num_links;
+    MeiLuoShyy scheme;
+    DirectionOffsets offsets;
+    LinkSlots slots;
+    LinkMassRestorer restorer;
+    PopulationField* f;
+    LinkPopulations* populations;
+    double* defect;
 
-  State(const LinkSweep& order, std::size_t num_links, const MeiLuoShyy& scheme,
-        FluidSolver& solver, LinkPopulations* populations, double* defect, double* deferred)
-      : order(order),
-        num_links(num_links),
-        scheme(scheme),
-        offsets(solver.layout()),
-        slots(offsets, solver.populations()),
-        restorer(solver.layout(), solver.node_types(), solver.populations(), {order.ids(), deferred}),
-        f(&solver.populations()),
-        populations(populations),
-        defect(defect) {}
+    Step(const LinkSweep& order, std::size_t num_links, const MeiLuoShyy& scheme,
+         FluidSolver& solver, LinkPopulations* populations, double* defect, double* deferred)
+        : order(order),
+          num_links(num_links),
+          scheme(scheme),
+          offsets(solver.layout()),
+          slots(offsets, solver.populations()),
+          restorer(solver.layout(), solver.node_types(), solver.populations(), {order.ids(), deferred}),
+          f(&solver.populations()),
+          populations(populations),
+          defect(defect) {}
 
-  // The nodes at sorted positions [i, end) that are (`open`) or are not next to an open face.
-  void apply(std::size_t i, std::size_t end, bool open) const {
-    apply_nodes(order, i, end, open, scheme, offsets, slots, scheme.rho0, restorer, *f,
-                populations, defect);
-  }
+    // The nodes at sorted positions [i, end) that are (`open`) or are not next to an open face.
+    void apply(std::size_t i, std::size_t end, bool open) const {
+      apply_nodes(order, i, end, open, scheme, offsets, slots, scheme.rho0, restorer, *f,
+                  populations, defect);
+    }
+  };
+  std::optional<Step> step;
   // Seconds each thread spent in prepare in this step (a line each: written concurrently).
   struct alignas(64) ThreadSeconds {
     double value = 0.0;
@@ -97,12 +103,12 @@ struct KernelLinks::State {
   static void prepare(const void* context, std::size_t from, std::size_t to) {
     const State& s = *static_cast<const State*>(context);
     const auto start = std::chrono::steady_clock::now();
-    const std::uint32_t* const cells = s.order.sorted_cells();
-    const std::uint32_t* const end = cells + s.num_links;
+    const std::uint32_t* const cells = s.step->order.sorted_cells();
+    const std::uint32_t* const end = cells + s.step->num_links;
     const auto below = [](std::uint32_t cell, std::size_t bound) { return cell < bound; };
     const std::uint32_t* const lo = std::lower_bound(cells, end, from, below);
     const std::uint32_t* const hi = std::lower_bound(lo, end, to, below);
-    s.apply(std::size_t(lo - cells), std::size_t(hi - cells), false);
+    s.step->apply(std::size_t(lo - cells), std::size_t(hi - cells), false);
     const std::size_t t = std::size_t(team_member().index);
     if (t < s.seconds.size())
       s.seconds[t].value += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -129,13 +135,14 @@ void KernelLinks::begin(const std::vector<BoundaryLink>& links, FluidSolver& sol
   order.deferred_defects().resize(n);
   const MeiLuoShyy scheme{solver.parameters().rho0, 1.0 / solver.trt().omega_plus,
                           solver.parameters().body_force, &solver.node_types(), nullptr, 0, &field};
-  state_ = std::make_unique<State>(order, n, scheme, solver, populations.data(), per_link.data(),
-                                   order.deferred_defects().data());
-  state_->seconds.resize(std::size_t(max_threads()));
-  state_->apply(0, n, true);
+  if (!state_) state_ = std::make_unique<State>();
+  state_->step.emplace(order, n, scheme, solver, populations.data(), per_link.data(),
+                       order.deferred_defects().data());
+  state_->seconds.assign(std::size_t(max_threads()), State::ThreadSeconds{});
+  state_->step->apply(0, n, true);
   // What a node's links read and write lies within one link of it (x + c_q, x - c_q).
   std::size_t reach = 0;
-  for (const std::ptrdiff_t of : state_->offsets.of) reach = std::max(reach, std::size_t(std::abs(of)));
+  for (const std::ptrdiff_t of : state_->step->offsets.of) reach = std::max(reach, std::size_t(std::abs(of)));
   solver.correct_pulls_in_next_step(order.sorted_cells(), order.deferred_defects().data(), n,
                                     PullPreparation{&State::prepare, state_.get(), reach});
 }
