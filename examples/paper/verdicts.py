@@ -40,6 +40,12 @@ def _within(value, centre, half_width):
     return None if not math.isfinite(value) else abs(value - centre) <= half_width
 
 
+def _over(r):
+    """' (intervals over one run's bursts)' where a law-type figure has a single run, whose
+    bootstrap resamples bursts, not runs (figures/common.py, resampled)."""
+    return " (intervals over one run's bursts)" if r.get("intervals_over") == "bursts" else ""
+
+
 def porediameter(r):
     law = r.get("diameter_law", {})
     K, a = law.get("K"), law.get("a")
@@ -54,7 +60,7 @@ def porediameter(r):
 
 def porelength(r):
     c, p = r.get("excess_coefficient"), r.get("pearson")
-    ours = f"c {_fmt(c)} on P - P_0 through 0, Pearson {_fmt(p)}"
+    ours = f"c {_fmt(c)} on P - P_0 through 0, Pearson {_fmt(p)}{_over(r)}"
     cv, pv = _value(c), _value(p)
     return ours, _judge([(_within(cv, 0.27, 0.05), f"c {cv:.3g} outside 0.27 +- 0.05"),
                          (None if not math.isfinite(pv) else pv >= 0.8, f"Pearson {pv:.3g} below 0.8")])
@@ -62,7 +68,7 @@ def porelength(r):
 
 def dropvol(r):
     s, p = r.get("excess_through_origin"), r.get("pearson")
-    ours = f"slope {_fmt(s)} per D^3 on P - P_0 through 0, Pearson {_fmt(p)}"
+    ours = f"slope {_fmt(s)} per D^3 on P - P_0 through 0, Pearson {_fmt(p)}{_over(r)}"
     sv, pv = _value(s), _value(p)
     return ours, _judge([(_within(sv, 1.15, 0.25), f"slope {sv:.3g} outside 1.15 +- 0.25"),
                          (None if not math.isfinite(pv) else 0.5 <= pv <= 0.9,

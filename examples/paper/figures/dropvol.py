@@ -55,5 +55,5 @@ def analyze(summary, out_dir):
                   excess_through_origin=fits["excess_through_origin"], intercept=fits["intercept"],
                   per_pore_volume={k: pore[k] for k in ("through_origin", "excess_through_origin",
                                                         "slope", "intercept")},
-                  pearson=fits["pearson"], bursts=int(len(x)),
+                  pearson=fits["pearson"], bursts=int(len(x)), intervals_over=fits["unit"],
                   **beside_results(beside))

@@ -106,7 +106,7 @@ def analyze(summary, out_dir):
     f_a_groups = [([p[2] for p in ps if np.isfinite(p[2])],) * 2 for ps in points]
     f_a = bootstrap(resampled(f_a_groups)[0], lambda x, y: float(np.mean(x)) if len(x) else np.nan)
     law = diameter_law(summary)
-    fig, (ax, ax_law) = plt.subplots(1, 2, figsize=(11, 4.5))
+    fig, (ax, ax_law) = plt.subplots(1, 2, figsize=(11, 6.5))
     for D in sorted({float(run["knobs"]["D"]) for run in runs}):
         x = [p[0] for run, ps in zip(runs, points) if float(run["knobs"]["D"]) == D for p in ps]
         y = [p[1] for run, ps in zip(runs, points) if float(run["knobs"]["D"]) == D for p in ps]
@@ -119,7 +119,8 @@ def analyze(summary, out_dir):
         ax.plot(xs, 4 * f_a[0] * xs, "C4:", label=f"theory 4 f_a, f_a = {fmt(*f_a)} P_out")
     ax.set_xlabel("L_dep / D")
     ax.set_ylabel("P_peak [P_out]")
-    ax.legend(fontsize=7, ncol=2)
+    # below the axes: above them it hid the bursts of the narrow pores
+    ax.legend(fontsize=7, ncol=2, loc="upper center", bbox_to_anchor=(0.5, -0.13))
     _draw_law(ax_law, law)
     return result(summary, "porediameter", "K in P = K L_dep / D; theory 4 f_a",
                   f"{PAPER_K} +- 0.04; f_a = K/4 = {PAPER_K / 4:.3g}",

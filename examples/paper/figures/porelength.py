@@ -35,5 +35,5 @@ def analyze(summary, out_dir):
                   f"{fits_text(fits)}; Pearson {fmt(*fits['pearson'])}; {beside_text(beside)}",
                   save(fig, out_dir, "porelength"), coefficient=fits["through_origin"],
                   excess_coefficient=fits["excess_through_origin"], slope=fits["slope"],
-                  intercept=fits["intercept"], pearson=fits["pearson"],
+                  intercept=fits["intercept"], pearson=fits["pearson"], intervals_over=fits["unit"],
                   **beside_results(beside))
