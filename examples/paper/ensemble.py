@@ -132,15 +132,32 @@ def _knobs_file(run_dir):
     return os.path.join(run_dir, "knobs.json")
 
 
+# The knobs that say only how often a run saves itself, not what it computes (in.pore's
+# `restart` output leaves the atoms and the lattice as they are): a run whose knobs differ in
+# these alone resumes, and records the new ones, rather than starting anew.
+BOOKKEEPING_KNOBS = ("restart_every", "checkpoint_keep")
+
+
+def _computed(knobs):
+    """The knobs as knobs.json records them, less the bookkeeping ones."""
+    return {k: str(v) for k, v in knobs.items() if k not in BOOKKEEPING_KNOBS}
+
+
+def _write_knobs(run_dir, knobs):
+    with open(_knobs_file(run_dir), "w") as f:
+        json.dump({k: str(v) for k, v in knobs.items()}, f, indent=1, sort_keys=True)
+
+
 def plan_run(run_dir, knobs, retry_failed=False):
     """What a launch of the study does with one run: ('skip', state) for a finished run (and
     a failed one unless retry_failed), ('resume', restart files newest first) for a run cut
-    short that left restart files with the same knobs, else ('fresh', why)."""
+    short that left restart files with the same knobs (BOOKKEEPING_KNOBS aside), else
+    ('fresh', why)."""
     if not os.path.isdir(run_dir):
         return "fresh", "new"
     try:
         with open(_knobs_file(run_dir)) as f:
-            same = json.load(f) == {k: str(v) for k, v in knobs.items()}
+            same = _computed(json.load(f)) == _computed(knobs)
     except (OSError, ValueError):
         same = False
     if not same:
@@ -158,8 +175,7 @@ def _clean(run_dir, knobs):
     if os.path.isdir(run_dir):
         shutil.rmtree(run_dir)
     os.makedirs(run_dir)
-    with open(_knobs_file(run_dir), "w") as f:
-        json.dump({k: str(v) for k, v in knobs.items()}, f, indent=1, sort_keys=True)
+    _write_knobs(run_dir, knobs)
 
 
 def resume_knobs(knobs, restart_file):
@@ -291,6 +307,7 @@ def prepare_launch(run_dir, knobs, retry_failed=False):
                     f.seek(-1, os.SEEK_END)
                     if f.read(1) != b"\n":
                         f.write(b"\n")
+        _write_knobs(run_dir, knobs)  # its bookkeeping knobs may have changed
         return resume_knobs(knobs, detail[0])
     _clean(run_dir, knobs)
     return dict(knobs)

@@ -23,10 +23,11 @@ then analyze.py fits and plots (<out>/results.json, <out>/<study>.png).
 --set changes a knob of every run (e.g. --set u_lattice=0.005).
 
 Long studies survive interruption: every run writes restart files in turn (in.pore's
-restart_every, by default every 1/50 of the run, and keeps the two fluid checkpoints they
-name). Rerunning the same command leaves finished runs (and failed ones, unless
---retry-failed) alone, continues each run that was cut short from its newest readable
-restart file, and starts anew a run whose knobs changed; --fresh deletes every run first.
+restart_every, by default every 1/50 of the run and at least every 4000 fluid steps, and
+keeps the two fluid checkpoints they name). Rerunning the same command leaves finished runs
+(and failed ones, unless --retry-failed) alone, continues each run that was cut short from its
+newest readable restart file, and starts anew a run whose knobs changed (not those that only
+say how often it saves itself, --restart-every); --fresh deletes every run first.
 While the runs go on it prints, every --progress-every seconds (and keeps in
 <out>/progress.txt), the runs done and to do, each running run's step and the time left.
 
@@ -67,13 +68,20 @@ def parse_added_run(text, base):
     return name, knobs
 
 
+# The most fluid steps between two restart files by default: a few minutes of a paper-size
+# run, the work a run loses when its sitting ends without warning. Changing it resumes a run
+# (ensemble.BOOKKEEPING_KNOBS).
+MAX_RESTART_FLUID_STEPS = 4000
+
+
 def restart_knobs(knobs, restart_every=None):
     """The knobs that make a run resumable: restart files every restart_every fluid steps
-    (default 1/50 of the run, at least one fluid step), as DEM steps (a multiple of the DEM
-    steps per fluid step, so the continuation is exact), and the two checkpoints they name."""
+    (default 1/50 of the run, at least one fluid step and at most MAX_RESTART_FLUID_STEPS), as
+    DEM steps (a multiple of the DEM steps per fluid step, so the continuation is exact), and
+    the two checkpoints they name."""
     n_dem = studies.run_dem_steps_per_fluid_step(knobs)
     fluid_steps = (int(knobs["steps"]) + int(knobs["warmup"])) // n_dem
-    every = restart_every if restart_every else max(1, fluid_steps // 50)
+    every = restart_every if restart_every else max(1, min(fluid_steps // 50, MAX_RESTART_FLUID_STEPS))
     return dict(knobs, restart_every=every * n_dem, checkpoint_keep=2)
 
 
@@ -134,7 +142,8 @@ def main():
     parser.add_argument("--set", action="append", default=[], metavar="knob=value",
                         help="change a knob of every run")
     parser.add_argument("--restart-every", type=int, default=None, metavar="FLUID_STEPS",
-                        help="fluid steps between restart files (default: 1/50 of a run)")
+                        help="fluid steps between restart files (default: 1/50 of a run, at most "
+                             f"{MAX_RESTART_FLUID_STEPS}); changing it resumes a run, not restarts it")
     parser.add_argument("--fresh", action="store_true", help="delete the runs made before")
     parser.add_argument("--runs", metavar="REGEX", default=None,
                         help="launch only the runs whose names match (the others are left as they are)")

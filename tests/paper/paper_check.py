@@ -152,10 +152,13 @@ def resume(args, work):
     runner.wait()
     ok = check("killed mid-run", killed_at is not None and killed_at < 1002000, killed_at,
                "a step between 40 % and the end")
-    second = run_study(args, cut, *base)
-    ok &= check("resumed, not restarted", "resumes from restart" in second.stdout,
+    # Resumed with restart files at another interval (a knob that says only how often a run
+    # saves itself): it continues, and records the new interval.
+    second = run_study(args, cut, *base, "--restart-every", "50")
+    ok &= check("resumed, not restarted, at another restart interval", "resumes from restart" in second.stdout
+                and json.load(open(os.path.join(run_dir, "knobs.json")))["restart_every"] == str(50 * 178),
                 [line for line in second.stdout.splitlines() if "seed_100003:" in line and "-var" not in line],
-                "'resumes from restart...'")
+                "'resumes from restart...', knobs.json's restart_every 50 fluid steps")
     summary = json.load(open(os.path.join(cut, "summary.json")))
     ok &= check("finished", summary["finished"] == 1, summary["finished"], "1 run done")
     a = study_io.thermo(os.path.join(whole, "runs", "seed_100003"))
