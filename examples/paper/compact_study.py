@@ -2,10 +2,12 @@
 """Copies what a study's evidence needs into a small folder that can be kept in the
 repository (a study's own folder holds restart files and fluid checkpoints of tens of MB):
 summary.txt, results.json and the plots, the analysis's table if any, and per run its
-bursts.txt, its cost (cost.txt, run_cost), its deposit speed survey (deposit_speeds.txt) if
-any, and the thermo columns the analyses read (thermo.csv.gz, every `every`-th row and
-every row from a burst's window before its peak, BURST_WINDOW fluid steps, to half a window
-after it), with the ERROR line of a run that stopped. analyze.py reads the compacted folder
+bursts.txt, its cost (cost.txt, run_cost), its deposit speed survey (deposit_speeds.txt), its
+snapshot figure's frames (snapshots.npz, render_snapshot.py --keep) and replay record
+(replay.json, replay_window.py) if any, and the thermo columns the analyses read
+(thermo.csv.gz, every `every`-th row and every row from a burst's window before its peak,
+BURST_WINDOW fluid steps, to half a window after it), with the ERROR line of a run that
+stopped. analyze.py reads the compacted folder
 as it reads the study (study_io).
 
 Usage: compact_study.py <study folder> <destination> [--every N]
@@ -47,7 +49,8 @@ def compact(study, dest, every=10):
 def compact_run(run, out, every=10):
     """One run's compact result in `out` (see the module's docstring)."""
     os.makedirs(out, exist_ok=True)
-    for keep in ("bursts.txt", "knobs.json", "deposit_speeds.txt", run_cost.COST_FILE):
+    for keep in ("bursts.txt", "knobs.json", "deposit_speeds.txt", run_cost.COST_FILE,
+                 "snapshots.npz", "replay.json"):
         if os.path.exists(os.path.join(run, keep)):
             shutil.copy(os.path.join(run, keep), out)
     state, reason = run_state(run)

@@ -269,7 +269,7 @@ def _execute(cmd, cwd, stdout_path, timeout):
                 _RUNNING.discard(proc)
 
 
-def _study_command(driver, launch_dir, nruns, partitions, ranks_per_run, mpirun, launches_at_once=1):
+def study_command(driver, launch_dir, nruns, partitions, ranks_per_run, mpirun, launches_at_once=1):
     cmd = [driver]
     if partitions > 1:
         cmd += ["-partition", f"{partitions}x{ranks_per_run}"]
@@ -339,7 +339,7 @@ def launch_partitions(driver, study_dir, runs, partitions, ranks_per_run, mpirun
         for i, name in enumerate(batch, start=1):
             write_run_file(launch_dir, i, os.path.join(study_dir, "runs", name), launch_knobs[name],
                            study_scene(study_dir))
-        cmd = _study_command(driver, launch_dir, len(batch), len(batch), ranks_per_run, mpirun)
+        cmd = study_command(driver, launch_dir, len(batch), len(batch), ranks_per_run, mpirun)
         start = time.time()
         if progress:
             for name in batch:
@@ -381,7 +381,7 @@ def launch_pool(driver, study_dir, runs, parallel, ranks_per_run, mpirun, timeou
             launch_dir = os.path.join(run_dir, "launch")
             os.makedirs(launch_dir, exist_ok=True)
             write_run_file(launch_dir, 1, run_dir, launch_knobs, study_scene(study_dir))
-            cmd = _study_command(driver, launch_dir, 1, 1, ranks_per_run, mpirun, parallel)
+            cmd = study_command(driver, launch_dir, 1, 1, ranks_per_run, mpirun, parallel)
             start = time.time()
             if progress:
                 progress.started(name, launch_knobs)

@@ -4,7 +4,7 @@ any deposit, (2) at a pressure peak and (3) after the burst, each a slice of the
 through the pore's axis with the particles on it coloured by their drag per mass (blue to
 yellow, low to high), beside the pressure loss with the three times marked.
 
-Usage: render_snapshot.py <run folder> [--out collection.png]
+Usage: render_snapshot.py <run folder> [--out collection.png] [--keep]
        render_snapshot.py <run folder> --at peak [--out snapshot_peak.png]
 
 With --at peak it draws one snapshot, the clogged pore at the run's highest pressure peak:
@@ -15,10 +15,12 @@ VTK frames marked; it says how far the frame lies from the peak and, when P ther
 
 The run folder is what in.pore writes with vtk_every > 0: fluid_vtk/fluid_<fluid step>.vti
 (.pvti on several ranks), particles_vtk/particles_<DEM step>.vtp (id radius mass x v
-f_pore[1-3]), log.liggghts and bursts.txt. The three times: (1) the last fluid file before the
-first deposit (f_pore[6] still 0), (2) the file nearest the peak of the largest burst, (3) the
-first file after that burst's minimum; a run without a burst takes (2) at its largest P / P_out
-with particles in and (3) at its end, and says so in the title.
+f_pore[1-3]), log.liggghts and bursts.txt. The three times: (2) the file nearest the peak of
+the largest burst, (1) the last file before it with the least deposited (f_pore[6]; nothing,
+in a run's first part), (3) the first file after that burst's minimum; a run without a burst
+takes (2) at its largest P / P_out with particles in and (3) at its end, and says so in the
+title. --keep also writes <run>/snapshots.npz, the three frames (slices and particles, some
+hundred kB), from which the figure is redrawn once the VTK files are gone.
 
 The files are read and sliced with VTK's Python bindings (Debian's python3-vtk9) and drawn with
 matplotlib's Agg backend. VTK's own render window is not used: Debian builds python3-vtk9 for
@@ -195,18 +197,15 @@ def render_peak(run_dir, out):
 
 def pick_times(run_dir, steps):
     """The three fluid steps (before, peak, after) among `steps` and a note on how they were
-    chosen."""
+    chosen. (1) is the last file before the burst's peak with the least deposited (f_pore[6],
+    none in a run's first part; a window replayed from a clogging run, replay_window.py, may
+    always hold some), so that (1) to (3) follow one deposit."""
     columns = thermo(run_dir)
     rows = list(zip(columns.get("Step", []), columns.get("pore[6]", []),
                     columns.get("pore[16]", [])))
     timing = lattice_timing(run_dir)  # the run's own DEM steps per fluid step and fluid step
     fluid_step = lambda dem_step: dem_step / timing["n_dem"]  # noqa: E731
     nearest = lambda t: min(steps, key=lambda s: abs(s - t))  # noqa: E731
-    first_deposit = next((step for step, v_dep, _ in rows if v_dep > 0), None)
-    if first_deposit is None:
-        before = steps[len(steps) // 2]  # nothing deposits: any time is "before"
-    else:
-        before = max([s for s in steps if s < fluid_step(first_deposit)] or [steps[0]])
     events = bursts(run_dir)
     if events:
         largest = max(events, key=lambda b: b["delta_P"])
@@ -219,44 +218,101 @@ def pick_times(run_dir, steps):
         top = highest_peak(run_dir)[0] if rows else steps[-1] * timing["n_dem"]
         peak, after = nearest(fluid_step(top)), steps[-1]
         note = "no burst in this run: (2) at its largest P / P_out, (3) at its end"
+    deposited = {fluid_step(step): v_dep for step, v_dep, _ in rows}
+    candidates = [s for s in steps if s < peak and s in deposited]
+    if candidates:
+        least = min(deposited[s] for s in candidates)
+        before = max(s for s in candidates if deposited[s] == least)
+    else:
+        before = steps[0]
     return (before, peak, after), note
 
 
-def render(run_dir, out):
+def collection_frames(run_dir):
+    """What the snapshot figure draws, from the run's VTK files: the three fluid steps, the
+    note on them, each step's fluid slice (read_fluid_slice) and particles (read_particles),
+    and the pressure loss over the run (fluid step, P / P_out)."""
     files = fluid_files(run_dir)
     if not files:
-        sys.exit(f"{run_dir}: no fluid_vtk/fluid_*.vti (run with vtk_every > 0)")
-    steps = sorted(files)
-    times, note = pick_times(run_dir, steps)
+        sys.exit(f"{run_dir}: no fluid_vtk/fluid_*.vti (run with vtk_every > 0) and no {KEPT}")
+    times, note = pick_times(run_dir, sorted(files))
     n_dem = lattice_timing(run_dir)["n_dem"]
-    fig, axes = plt.subplots(4, 1, figsize=(8, 11), gridspec_kw=dict(height_ratios=[1, 1, 1, 1]))
-    speeds = [read_fluid_slice(files[s]) for s in times]
-    vmax = max(float(s[0].max()) for s in speeds) or 1.0
-    drags = []
+    parts = []
     for s in times:
         path = particle_file(run_dir, s, n_dem)
-        drags.append(read_particles(path) if os.path.exists(path) else (np.zeros(0),) * 5)
-    dmax = max([float(d[4].max()) for d in drags if len(d[4])] or [1.0]) or 1.0
-    for n, (ax, s, fluid, parts) in enumerate(zip(axes, times, speeds, drags), start=1):
+        parts.append(read_particles(path) if os.path.exists(path) else (np.zeros(0),) * 5)
+    columns = thermo(run_dir)
+    trace = (np.asarray(columns["Step"]) / n_dem, np.asarray(columns["pore[16]"])) \
+        if "pore[16]" in columns else (np.zeros(0), np.zeros(0))
+    return dict(name=os.path.basename(os.path.abspath(run_dir)), times=tuple(times), note=note,
+                fluid=[read_fluid_slice(files[s]) for s in times], particles=parts, trace=trace)
+
+
+# The three frames of a run's snapshot figure, small enough for the repository (the slices
+# and the particles, not the VTK files): `render_snapshot.py <run> --keep` writes it, and
+# render() draws from it where the VTK files are gone (compact_study.py keeps it).
+KEPT = "snapshots.npz"
+
+
+def save_frames(frames, path):
+    arrays = dict(name=frames["name"], times=np.asarray(frames["times"]), note=frames["note"],
+                  trace_t=frames["trace"][0], trace_P=frames["trace"][1])
+    for n, (fluid, parts) in enumerate(zip(frames["fluid"], frames["particles"])):
+        speed, solid, spacing, origin = fluid
+        arrays.update({f"speed{n}": speed.astype(np.float32), f"solid{n}": solid,
+                       f"spacing{n}": np.asarray(spacing), f"origin{n}": np.asarray(origin),
+                       f"particles{n}": np.asarray(parts, dtype=np.float32).reshape(5, -1)})
+    np.savez_compressed(path, **arrays)
+
+
+def load_frames(path):
+    with np.load(path) as a:
+        return dict(name=str(a["name"]), times=tuple(int(t) for t in a["times"]), note=str(a["note"]),
+                    trace=(a["trace_t"], a["trace_P"]),
+                    fluid=[(a[f"speed{n}"], a[f"solid{n}"], tuple(a[f"spacing{n}"]), tuple(a[f"origin{n}"]))
+                           for n in range(3)],
+                    particles=[tuple(a[f"particles{n}"].astype(float)) for n in range(3)])
+
+
+def draw_collection(frames, out):
+    times = frames["times"]
+    fig, axes = plt.subplots(4, 1, figsize=(8, 11), gridspec_kw=dict(height_ratios=[1, 1, 1, 1]))
+    vmax = max(float(f[0].max()) for f in frames["fluid"]) or 1.0
+    dmax = max([float(p[4].max()) for p in frames["particles"] if len(p[4])] or [1.0]) or 1.0
+    for n, (ax, s, fluid, parts) in enumerate(zip(axes, times, frames["fluid"], frames["particles"]),
+                                              start=1):
         image, _ = draw_frame(ax, fluid, parts, vmax, dmax)
         ax.set_title(f"({n}) fluid step {s}: {len(parts[0])} particles")
         fig.colorbar(image, ax=ax, label="fluid speed [cells / fluid step]", shrink=0.8)
     ax = axes[3]
-    columns = thermo(run_dir)
-    if "pore[16]" in columns:
-        t = np.asarray(columns["Step"]) / n_dem
-        ax.plot(t, columns["pore[16]"], "k-")
+    t, p = frames["trace"]
+    if len(t):
+        ax.plot(t, p, "k-")
         for n, s in enumerate(times, start=1):
             ax.axvline(s, color="C3", ls=":")
             ax.text(s, ax.get_ylim()[1], f"({n})", ha="center", va="bottom")
     ax.set_xlabel("fluid step")
     ax.set_ylabel("P / P_out")
-    fig.suptitle(f"{os.path.basename(os.path.abspath(run_dir))}: {note}\n"
+    fig.suptitle(f"{frames['name']}: {frames['note']}\n"
                  f"particles: drag per mass 0 (blue) ... {dmax:.3g} (yellow)", fontsize=9)
     fig.tight_layout()
     fig.savefig(out, dpi=90)
-    print(f"wrote {out}: fluid steps {times}; {note}")
-    return times
+    print(f"wrote {out}: fluid steps {times}; {frames['note']}")
+
+
+def render(run_dir, out, keep=False):
+    """The snapshot figure of a run, from its VTK files or, where they are gone, from the
+    frames kept in <run>/snapshots.npz; keep=True writes that file. Returns the three steps."""
+    kept = os.path.join(run_dir, KEPT)
+    if not fluid_files(run_dir) and os.path.exists(kept):
+        frames = load_frames(kept)
+    else:
+        frames = collection_frames(run_dir)
+        if keep:
+            save_frames(frames, kept)
+            print(f"kept the three frames in {kept} ({os.path.getsize(kept) / 1e3:.0f} kB)")
+    draw_collection(frames, out)
+    return frames["times"]
 
 
 def main():
@@ -267,11 +323,14 @@ def main():
     parser.add_argument("--at", choices=["collection", "peak"], default="collection",
                         help="collection: before, at the largest burst's peak and after (default); "
                              "peak: one frame, the one nearest the highest P / P_out")
+    parser.add_argument("--keep", action="store_true",
+                        help=f"collection: also write <run>/{KEPT}, the three frames small enough "
+                             "to keep in the repository, from which the figure is redrawn")
     args = parser.parse_args()
     if args.at == "peak":
         render_peak(args.run_dir, args.out or "snapshot_peak.png")
     else:
-        render(args.run_dir, args.out or "collection.png")
+        render(args.run_dir, args.out or "collection.png", args.keep)
 
 
 if __name__ == "__main__":

@@ -32,6 +32,7 @@ Usage: paper_check.py --driver liggghts-lbm --repo <source root> --python /usr/b
 """
 import argparse
 import json
+import re
 import os
 import subprocess
 import sys
@@ -110,18 +111,92 @@ def ensemble(args, work):
     return ok
 
 
-def snapshot(args, work):
-    run_study(args, work, "collection", "--size", "tiny")
-    png = os.path.join(work, "collection.png")
-    if not check("image written", os.path.exists(png), os.path.exists(png), "exists"):
-        return False
+def study_rows(run_dir):
+    """A run's thermo rows as the analyses read them (study_io.thermo), a list per step."""
+    log = os.path.join(run_dir, "log.liggghts")
+    if not os.path.exists(log):
+        return []
+    rows, header = [], None
+    for line in open(log, errors="replace"):
+        words = line.split()
+        if words[:1] == ["Step"]:
+            header = words
+        elif header and len(words) == len(header) and words[0].isdigit():
+            rows.append(words)
+    return rows
+
+
+def image_colours(args, png):
+    """(distinct colours, the largest share of one colour) of a picture."""
     probe = ("import matplotlib.image as m, numpy as n, sys; a = m.imread(sys.argv[1])[..., :3];"
              "q = (a * 255).astype(int).reshape(-1, 3); u, c = n.unique(q, axis=0, return_counts=True);"
              "print(len(u), c.max() / len(q))")
     colours, top = subprocess.run([args.python, "-c", probe, png], capture_output=True,
                                   text=True, check=True).stdout.split()
-    ok = check("image has many colours", int(colours) > 200, colours, "> 200 distinct")
-    ok &= check("not one colour", float(top) < 0.9, top, "< 0.9 of the pixels (blank: 1)")
+    return int(colours), float(top)
+
+
+def snapshot(args, work):
+    run_study(args, work, "collection", "--size", "tiny", "--restart-every", "40")
+    png = os.path.join(work, "collection.png")
+    if not check("image written", os.path.exists(png), os.path.exists(png), "exists"):
+        return False
+    colours, top = image_colours(args, png)
+    ok = check("image has many colours", colours > 200, colours, "> 200 distinct")
+    ok &= check("not one colour", top < 0.9, top, "< 0.9 of the pixels (blank: 1)")
+    run_dir = os.path.join(work, "runs", "snapshot")
+    kept = os.path.join(run_dir, "snapshots.npz")
+    ok &= check("the three frames kept for the repository", os.path.exists(kept)
+                and os.path.getsize(kept) < 2e6, os.path.exists(kept) and os.path.getsize(kept),
+                "snapshots.npz, < 2 MB")
+    # A window of the run replayed from its older restart file (restart files every 40 fluid
+    # steps of 178 DEM steps: restart.a at fluid step 120, restart.b at 160) to the run's end,
+    # with VTK files every 10 fluid steps and without: the files leave the trajectory alone
+    # (the two replays' rows identical), and the replay continues the run (P / P_out within
+    # round-off of the run's at the first row after the restart; the run went on without
+    # reading the file, so the two part later, as the resume case shows).
+    restarts = sorted((os.path.join(run_dir, n) for n in ("restart.a", "restart.b")), key=os.path.getmtime)
+    records = {}
+    for name, every in (("replay", "10"), ("replay_no_vtk", "0")):
+        done = subprocess.run([args.python, os.path.join(args.repo, "examples", "paper", "replay_window.py"),
+                               run_dir, "--restart", restarts[0], "--fluid-steps", "59", "--vtk-every", every,
+                               "--out", os.path.join(work, name), "--driver", args.driver],
+                              capture_output=True, text=True, timeout=170)
+        print(done.stdout[-2000:], done.stderr[-2000:], flush=True)
+        path = os.path.join(work, name, "replay.json")
+        records[name] = json.load(open(path)) if done.returncode == 0 and os.path.exists(path) else {}
+    replay = os.path.join(work, "replay")
+    record = records["replay"]
+    ok &= check("the replay continues the run", record.get("common", 0) >= 10
+                and (record["first_difference"] is None or record["P_difference_there"] < 1e-6),
+                {k: record.get(k) for k in ("start_dem_step", "common", "identical", "first_difference",
+                                            "P_difference_there")},
+                ">= 10 thermo rows in common, P / P_out within 1e-6 where they first differ")
+    with_files, without = study_rows(replay), study_rows(os.path.join(work, "replay_no_vtk"))
+    ok &= check("its VTK files leave the trajectory alone", with_files and with_files == without,
+                f"{len(with_files)} rows against {len(without)}", "every thermo row identical")
+    frames = sorted(os.listdir(os.path.join(replay, "fluid_vtk"))) if os.path.isdir(
+        os.path.join(replay, "fluid_vtk")) else []
+    ok &= check("the replay writes its VTK files", len([f for f in frames if f.endswith(".vti")]) >= 5,
+                frames, ">= 5 fluid files (fluid steps 130 ... 170)")
+    # Its figure drawn from the files with --keep, then again from snapshots.npz alone.
+    render = os.path.join(args.repo, "examples", "paper", "render_snapshot.py")
+    first, second = os.path.join(work, "replay_files.png"), os.path.join(work, "replay_kept.png")
+    drawn = subprocess.run([args.python, render, replay, "--keep", "--out", first], capture_output=True,
+                           text=True, timeout=120)
+    if os.path.isdir(os.path.join(replay, "fluid_vtk")):
+        os.rename(os.path.join(replay, "fluid_vtk"), os.path.join(replay, "fluid_vtk.gone"))
+    redrawn = subprocess.run([args.python, render, replay, "--out", second], capture_output=True,
+                             text=True, timeout=120)
+    print(drawn.stdout[-1000:], drawn.stderr[-1000:], redrawn.stdout[-1000:], redrawn.stderr[-1000:],
+          flush=True)
+    steps = lambda out: re.findall(r"fluid steps (\([^)]*\))", out)  # noqa: E731
+    same_steps = drawn.returncode == 0 and steps(drawn.stdout) and steps(drawn.stdout) == steps(redrawn.stdout)
+    colours, top = image_colours(args, second) if os.path.exists(second) else (0, 1.0)
+    ok &= check("redrawn from snapshots.npz without the VTK files", redrawn.returncode == 0
+                and colours > 200 and top < 0.9 and same_steps,
+                (redrawn.returncode, colours, top, steps(drawn.stdout), steps(redrawn.stdout)),
+                "exit 0, > 200 colours, < 0.9 of one colour, the same three fluid steps")
     return ok
 
 
