@@ -31,15 +31,26 @@ import sys
 
 def read_thermo(path):
     """Returns (header, rows) of the log's thermo blocks that share the last block's columns
-    (one block per run command), concatenated. A row whose step is not past the row before
+    (one block per run command), concatenated. A block with fewer of them (a run resumed by
+    a scene that prints more columns since) keeps its rows, NaN in the columns it lacks; a
+    block with columns the last lacks is left out. A row whose step is not past the row before
     supersedes the rows from its step on: a run resumed from a restart file (appending to
     its log) repeats the steps between that file and where it was cut short."""
     blocks = read_thermo_blocks(path)
     if not blocks:
         sys.exit(f"{path}: no thermo block with a 'Step' header found")
     header = blocks[-1][0]
+
+    def in_last_columns(h, rows):
+        if h == header:
+            return rows
+        if not set(h) <= set(header):
+            return []
+        where = [h.index(c) if c in h else None for c in header]
+        return [[row[j] if j is not None else float("nan") for j in where] for row in rows]
+
     kept = []
-    for row in (row for h, rows in blocks if h == header for row in rows):
+    for row in (row for h, rows in blocks for row in in_last_columns(h, rows)):
         while kept and kept[-1][0] >= row[0]:
             kept.pop()
         kept.append(row)

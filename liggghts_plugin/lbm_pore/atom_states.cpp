@@ -70,10 +70,12 @@ void AtomStates::add_lubrication(const coupling::LubricationKernel& kernel, cons
 double AtomStates::mark_deposits(const LatticeParticles& particles, const AtomArrays& atoms,
                                  const std::vector<char>& bonded_atoms, bool walls_followed,
                                  const contact::VoxelSurface& surface, std::vector<contact::SurfacePoint>& scratch,
-                                 std::vector<char>& bonded, std::vector<char>& on_wall) const {
+                                 std::vector<char>& bonded, std::vector<char>& on_wall,
+                                 std::vector<double>& fluid_along_flow) const {
   const std::size_t total = particles.size(), owned = particles.num_owned();
   bonded.assign(total, 0);
   on_wall.assign(total, 0);
+  fluid_along_flow.assign(total, 0.0);
   double fluid_force = 0.0;
   for (std::size_t p = 0; p < total; ++p) {
     const int i = particles.atom(p);
@@ -81,7 +83,8 @@ double AtomStates::mark_deposits(const LatticeParticles& particles, const AtomAr
       bonded[p] = bonded_atoms[i];
       continue;
     }
-    fluid_force += (*this)[i].load.force[0];
+    fluid_along_flow[p] = (*this)[i].load.force[0];
+    fluid_force += fluid_along_flow[p];
     const double* x = atoms.x[i];
     on_wall[p] = coupling::touches_wall(walls_followed ? &(*this)[i].wall : nullptr, surface, {x[0], x[1], x[2]},
                                         atoms.radius[i], scratch);

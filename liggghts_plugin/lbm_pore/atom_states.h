@@ -68,11 +68,13 @@ class AtomStates {
   // the wall (on_wall[p], owned particles; from the followed nearest walls where
   // `walls_followed`, else by a search of `surface`: coupling::touches_wall) and whether it
   // is bonded (bonded[p]: its atom has a cohesive bond, bonded_atoms per atom, or it touches
-  // the wall). Returns the fluid's force along the flow (x) on the owned particles.
+  // the wall), and the fluid's force along the flow (x) on each owned particle
+  // (fluid_along_flow[p], 0 for the others). Returns its sum over the owned particles.
   double mark_deposits(const LatticeParticles& particles, const AtomArrays& atoms,
                        const std::vector<char>& bonded_atoms, bool walls_followed,
                        const contact::VoxelSurface& surface, std::vector<contact::SurfacePoint>& scratch,
-                       std::vector<char>& bonded, std::vector<char>& on_wall) const;
+                       std::vector<char>& bonded, std::vector<char>& on_wall,
+                       std::vector<double>& fluid_along_flow) const;
 
   // A fluid step's loads in the three moves of SubstepLoadModel: every slot starts the step;
   // the coupling's loads on the particles of `particles` (lattice units, indexed like its

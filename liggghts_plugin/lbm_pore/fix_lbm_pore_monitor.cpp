@@ -43,8 +43,9 @@ void FixLbmPore::check_fluid_state() {
 
 // Deposits and particle fluxes (paper Sec. III), from the bonds the contact laws would form:
 // within the cohesion range of another particle or the adhesion range of the wall; and the
-// loads along the flow on the particles: the fluid's and, where a fix exposes this rank's
-// ("local_force", fix wall/voxel), the wall's.
+// loads along the flow on the particles, in all and per particle: the fluid's and, where a
+// fix exposes this rank's ("local_force" and "atom_wall_force_x", fix wall/voxel, whose
+// post_force of this DEM step ran before this end_of_step: the same atom order), the wall's.
 void FixLbmPore::record_particles() {
   collect_group_pairs();
   const lbm_pore::AtomArrays atoms = atom_arrays();
@@ -53,11 +54,15 @@ void FixLbmPore::record_particles() {
   coupling::PoreMonitor::ParticleLoads loads;
   // With lubrication on, find_walls() searched this fluid step already, over a wider reach.
   loads.fluid_force = states_.mark_deposits(particles_, atoms, bonded_atoms_, options_.lubrication, *surface_,
-                                            wall_points_, bonded_, on_wall_);
+                                            wall_points_, bonded_, on_wall_, loads.fluid_along_flow);
   for (int f = 0; f < modify->nfix; ++f) {
     int dim = 0;
     const auto* wall = static_cast<const double*>(modify->fix[f]->extract("local_force", dim));
     if (wall && dim == 1) loads.wall_force += wall[0];
+    const auto* per_atom = static_cast<const double*>(modify->fix[f]->extract("atom_wall_force_x", dim));
+    if (!per_atom || dim != 1) continue;
+    loads.wall_along_flow.resize(particles_.size(), 0.0);
+    for (std::size_t p = 0; p < particles_.num_owned(); ++p) loads.wall_along_flow[p] += per_atom[particles_.atom(p)];
   }
   monitor_->record_particles(particles_.view(), bonded_, on_wall_, loads, solver_->decomposition().comm);
 }

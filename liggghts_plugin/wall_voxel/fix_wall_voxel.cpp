@@ -137,6 +137,7 @@ void FixWallVoxel::post_force(int /*vflag*/) {
   const int nlocal = atom->nlocal;
   const double dt = update->dt;
   std::fill(local_stats_, local_stats_ + 5, 0.0);
+  atom_force_x_.assign(std::size_t(nlocal), 0.0);
   stats_reduced_ = false;
   // Particles inserted during the run may be lighter than those checked at init; all ranks
   // take this branch together, one reduction per insertion.
@@ -174,6 +175,7 @@ void FixWallVoxel::post_force(int /*vflag*/) {
     if (!std::isfinite(total.x + total.y + total.z)) stop_on_non_finite(i, "wall force");
     local_stats_[0] += wall.contacts;
     local_stats_[1] += total.x;
+    atom_force_x_[std::size_t(i)] = total.x;
     local_stats_[2] += total.y;
     local_stats_[3] += total.z;
   }
@@ -209,10 +211,14 @@ void FixWallVoxel::report_dropped_springs(int i, int dropped) {
     std::fprintf(stderr, "WARNING on proc %d: %s\n", comm->me, text);
 }
 
+// "local_force": this rank's total wall force along x (one value); "atom_wall_force_x": the
+// same per local atom, in the atom order of the last post_force.
 void* FixWallVoxel::extract(const char* name, int& dim) {
-  if (std::strcmp(name, "local_force") != 0) return nullptr;
   dim = 1;
-  return &local_stats_[1];
+  if (std::strcmp(name, "local_force") == 0) return &local_stats_[1];
+  if (std::strcmp(name, "atom_wall_force_x") == 0) return atom_force_x_.data();
+  dim = 0;
+  return nullptr;
 }
 
 double FixWallVoxel::compute_vector(int index) {

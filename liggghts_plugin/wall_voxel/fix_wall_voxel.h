@@ -23,6 +23,7 @@
 // R, stop above 50 %); NaN in a position or force stops the run with the atom ID and the
 // step; a spring store that overflows is warned about once per run, with the count.
 #include <memory>
+#include <vector>
 
 #include "contact/wall_contact.h"
 #include "fix.h"
@@ -74,6 +75,9 @@ class FixWallVoxel : public Fix {
   std::unique_ptr<lbm_pore::WallModel> model_;
   contact::WallContactParams params_;
   double local_stats_[5] = {0, 0, 0, 0, 0};   // contacts, force (3), largest overlap/R
+  // The wall's force along x on each local atom at the last post_force (0 off the wall):
+  // extract("atom_wall_force_x"), the deposit's own hold for fix lbm/pore's monitor.
+  std::vector<double> atom_force_x_;
   double global_stats_[5] = {0, 0, 0, 0, 0};
   double local_springs_dropped_ = 0.0;         // since the fix was defined, this rank
   double global_springs_dropped_ = 0.0;

@@ -70,8 +70,9 @@ TEST(PoreMonitor, DepositsAndCrossingsInHostUnits) {
   set.add(1, {3.0, 5.5, 5.5}, {0, 0, 0}, 1.0);   // upstream of the inlet plane
   set.add(2, {10.0, 5.5, 5.5}, {0, 0, 0}, 1.5);  // in the pore, at rest
   const lbm::Communicator serial;
-  // Particle 2 (deposited) touches the wall; the wall holds them with -0.5 along the flow.
-  monitor.record_particles(set.view(), {1, 1}, {0, 1}, {0.75, -0.5}, serial);
+  // Particle 2 (deposited) touches the wall; the wall holds them with -0.5 along the flow,
+  // of which -0.375 on particle 2; the fluid pushes particle 1 with 0.25 and 2 with 0.5.
+  monitor.record_particles(set.view(), {1, 1}, {0, 1}, {0.75, -0.5, {0.25, 0.5}, {-0.125, -0.375}}, serial);
   const double V = 4.0 / 3.0 * M_PI * 1.5 * 1.5 * 1.5;
   EXPECT_NEAR(monitor.values()[PoreMonitor::kDepositedVolume], V * 8.0, 1e-12);
   EXPECT_EQ(monitor.values()[PoreMonitor::kDepositedCount], 1.0);
@@ -79,12 +80,16 @@ TEST(PoreMonitor, DepositsAndCrossingsInHostUnits) {
   EXPECT_EQ(monitor.values()[PoreMonitor::kHydroForceX], 0.75);
   EXPECT_EQ(monitor.values()[PoreMonitor::kWallForceX], -0.5);
   EXPECT_EQ(monitor.values()[PoreMonitor::kDepositedOnWall], 1.0);
+  // The deposit's own loads: particle 2's alone, not the totals over both.
+  EXPECT_EQ(monitor.values()[PoreMonitor::kDepositFluidForceX], 0.5);
+  EXPECT_EQ(monitor.values()[PoreMonitor::kDepositWallForceX], -0.375);
   // The count under the scaled speed thresholds: particle 2 is at rest, under all of them.
   for (std::size_t i = 0; i < kDepositSpeedLadder.size(); ++i)
     EXPECT_EQ(monitor.values()[PoreMonitor::kDepositedCountScaledSpeed + i], 1.0);
   set.set_position(0, {4.0, 5.5, 5.5});  // crosses the inlet plane downstream
   monitor.record_particles(set.view(), {1, 1}, {0, 0}, {}, serial);
   EXPECT_EQ(monitor.values()[PoreMonitor::kParticlesIn], 1.0);
+  EXPECT_EQ(monitor.values()[PoreMonitor::kDepositWallForceX], 0.0);  // no per-particle loads given
   EXPECT_NEAR(monitor.values()[PoreMonitor::kParticlesInVolume], 4.0 / 3.0 * M_PI * 8.0, 1e-12);
 
   // No burst yet: every entry of the burst table reads 0, inside the rows or not.
@@ -92,28 +97,26 @@ TEST(PoreMonitor, DepositsAndCrossingsInHostUnits) {
   EXPECT_EQ(monitor.burst_value(-1, 3), 0.0);
   EXPECT_EQ(monitor.burst_value(2, BurstRecord::kColumns), 0.0);
 
+  monitor.record_particles(set.view(), {1, 1}, {0, 1}, {0.75, -0.5, {0.25, 0.5}, {-0.125, -0.375}}, serial);
   PoreMonitor resumed(setup, units);
   resumed.restore(monitor.state());
   EXPECT_EQ(resumed.values(), monitor.values());
-  // A state written before the wall's hold was recorded (kWallForceX values) restores with
-  // the hold 0.
-  std::vector<double> earlier = monitor.state();
-  earlier.erase(earlier.begin() + 1 + PoreMonitor::kWallForceX, earlier.begin() + 1 + PoreMonitor::kCount);
-  earlier[0] = PoreMonitor::kWallForceX;
-  PoreMonitor upgraded(setup, units);
-  upgraded.restore(earlier);
-  std::vector<double> expected = monitor.values();
-  std::fill(expected.begin() + PoreMonitor::kWallForceX, expected.end(), 0.0);
-  EXPECT_EQ(upgraded.values(), expected);
-  // ... and one written before the pressure across the pore and the speed ladder were.
-  std::vector<double> later = monitor.state();
-  later.erase(later.begin() + 1 + PoreMonitor::kPressureLossAcrossPore, later.begin() + 1 + PoreMonitor::kCount);
-  later[0] = PoreMonitor::kPressureLossAcrossPore;
-  PoreMonitor upgraded_later(setup, units);
-  upgraded_later.restore(later);
-  expected = monitor.values();
-  std::fill(expected.begin() + PoreMonitor::kPressureLossAcrossPore, expected.end(), 0.0);
-  EXPECT_EQ(upgraded_later.values(), expected);
+  // States written by earlier versions, which recorded only the first kWallForceX values
+  // (before the wall's hold), kPressureLossAcrossPore (before the pressure across the pore
+  // and the speed ladder) or kDepositFluidForceX (before the deposit's own loads), restore
+  // with the rest 0.
+  for (const int written : {int(PoreMonitor::kWallForceX), int(PoreMonitor::kPressureLossAcrossPore),
+                            int(PoreMonitor::kDepositFluidForceX)}) {
+    std::vector<double> earlier = monitor.state();
+    earlier.erase(earlier.begin() + 1 + written, earlier.begin() + 1 + PoreMonitor::kCount);
+    earlier[0] = written;
+    PoreMonitor upgraded(setup, units);
+    upgraded.restore(earlier);
+    std::vector<double> expected = monitor.values();
+    ASSERT_NE(expected[PoreMonitor::kDepositWallForceX], 0.0);
+    std::fill(expected.begin() + written, expected.end(), 0.0);
+    EXPECT_EQ(upgraded.values(), expected) << written << " values written";
+  }
   // A state of another version (its own number of values first) is refused, not misread.
   std::vector<double> foreign = monitor.state();
   foreign[0] = PoreMonitor::kCount - 4;

@@ -9,7 +9,10 @@ own files independently of the code it checks:
             must equal the mean of delta_P read here from each run's bursts.txt.
   snapshot  run_study.py collection --size tiny: the snapshot figure rendered from the run's
             own VTK files must exist and not be blank (many distinct colours, no single colour
-            covering nearly all of it).
+            covering nearly all of it), with its three frames kept (snapshots.npz). A window of
+            the run replayed from a restart file (replay_window.py) with VTK files and without:
+            its rows within round-off of the run's, identical with and without the files; its
+            figure redrawn from snapshots.npz alone with the same three frames.
   resume    run_study.py singlejump --size tiny (made longer) run once uninterrupted, and once
             killed (SIGKILL to the runner and its runs, as when a sitting ends) past 40 % of
             the run and started again with the same command. The second launch must resume

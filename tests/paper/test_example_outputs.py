@@ -12,6 +12,7 @@ Usage: test_example_outputs.py <source root>   (or python3 -m unittest with LBM_
 """
 import contextlib
 import io
+import math
 import os
 import re
 import sys
@@ -208,12 +209,28 @@ class PeakSnapshot(unittest.TestCase):
             self.make_run(work)
             with contextlib.redirect_stdout(io.StringIO()):
                 times = render_snapshot.render(work, os.path.join(work, "collection.png"))
-        # (1) the last frame before the first deposit (step 500 000: fluid step 5000), (2) the
-        # frame nearest the highest peak with particles, (3) the run's last frame.
+        # (1) the last frame before the peak with the least deposited: none before the first
+        # deposit (step 500 000: fluid step 5000), (2) the frame nearest the highest peak with
+        # particles, (3) the run's last frame.
         self.assertEqual(tuple(times), (4000, 8000, 10000))
 
 
 class ThermoBlocks(unittest.TestCase):
+    def test_a_block_with_fewer_columns_keeps_its_rows(self):
+        # A run resumed by a scene that prints a column more: its earlier rows stay, NaN in
+        # the new column; a block with a column the last lacks is left out.
+        with tempfile.TemporaryDirectory() as work:
+            log = os.path.join(work, "log.liggghts")
+            with open(log, "w") as f:
+                f.write("Step Atoms pore[16]\n100 1 0.1\n200 1 0.2\n")
+                f.write("Step Atoms pore[9]\n250 1 7\n")
+                f.write("Step Atoms pore[16] pore[35]\n300 1 0.3 -0.5\n")
+            header, rows = plot_pressure.read_thermo(log)
+        self.assertEqual(header, ["Step", "Atoms", "pore[16]", "pore[35]"])
+        self.assertEqual([r[:3] for r in rows], [[100, 1, 0.1], [200, 1, 0.2], [300, 1, 0.3]])
+        self.assertTrue(math.isnan(rows[0][3]) and math.isnan(rows[1][3]))
+        self.assertEqual(rows[2][3], -0.5)
+
     def test_a_message_as_long_as_the_header_does_not_end_the_block(self):
         with tempfile.TemporaryDirectory() as work:
             log = os.path.join(work, "log.liggghts")

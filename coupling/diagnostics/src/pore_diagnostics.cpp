@@ -22,10 +22,13 @@ bool in_pore_region(const Vec3& x, const PoreRegion& pore) {
 
 Deposition deposited(const ParticleView& view, const std::vector<char>& bonded, const PoreRegion& pore,
                      const DepositionCriteria& criteria, const lbm::Communicator& comm,
-                     const std::vector<char>* on_wall) {
+                     const std::vector<char>* on_wall, const ParticleForcesAlongFlow& forces) {
   constexpr std::size_t kLadder = kDepositSpeedLadder.size();
-  // volume, count, on the wall, then the count under each scaled threshold: one reduction.
-  std::array<double, 3 + kLadder> sums{};
+  constexpr std::size_t kFluid = 3 + kLadder, kWall = kFluid + 1;
+  // volume, count, on the wall, the count under each scaled threshold, then the fluid's and
+  // the wall's force on the deposited particles: one reduction.
+  std::array<double, kWall + 1> sums{};
+  const auto force_on = [](const std::vector<double>* f, std::size_t p) { return f && p < f->size() ? (*f)[p] : 0.0; };
   for (std::size_t p = 0; p < view.num_owned; ++p) {
     if (p >= bonded.size() || !bonded[p]) continue;
     if (!in_pore_region(view.x(p), pore)) continue;
@@ -38,6 +41,8 @@ Deposition deposited(const ParticleView& view, const std::vector<char>& bonded, 
     sums[0] += 4.0 / 3.0 * kPi * R * R * R;
     sums[1] += 1.0;
     if (on_wall && p < on_wall->size() && (*on_wall)[p]) sums[2] += 1.0;
+    sums[kFluid] += force_on(forces.fluid, p);
+    sums[kWall] += force_on(forces.wall, p);
   }
   comm.sum(sums.data(), int(sums.size()));
   Deposition d;
@@ -45,6 +50,8 @@ Deposition deposited(const ParticleView& view, const std::vector<char>& bonded, 
   d.count = (long long)std::llround(sums[1]);
   d.on_wall = (long long)std::llround(sums[2]);
   for (std::size_t i = 0; i < kLadder; ++i) d.count_at_scaled_threshold[i] = (long long)std::llround(sums[3 + i]);
+  d.fluid_force = sums[kFluid];
+  d.wall_force = sums[kWall];
   d.length = pore.diameter > 0.0 ? d.volume / (kPi * pore.diameter * pore.diameter / 4.0) : 0.0;
   return d;
 }

@@ -55,8 +55,12 @@ void PoreMonitor::record_particles(const ParticleView& view, const std::vector<c
                                    const lbm::Communicator& comm) {
   const double dx = units_.inputs().dx;
   const double volume_unit = dx * dx * dx;
-  const auto deposit = deposited(view, bonded, setup_.pore, setup_.criteria, comm, &on_wall);
+  const ParticleForcesAlongFlow per_particle{local.fluid_along_flow.empty() ? nullptr : &local.fluid_along_flow,
+                                            local.wall_along_flow.empty() ? nullptr : &local.wall_along_flow};
+  const auto deposit = deposited(view, bonded, setup_.pore, setup_.criteria, comm, &on_wall, per_particle);
   values_[kDepositedOnWall] = double(deposit.on_wall);
+  values_[kDepositFluidForceX] = deposit.fluid_force;
+  values_[kDepositWallForceX] = deposit.wall_force;
   auto& v = values_;
   for (std::size_t i = 0; i < kDepositSpeedLadder.size(); ++i)
     v[kDepositedCountScaledSpeed + i] = double(deposit.count_at_scaled_threshold[i]);
@@ -212,11 +216,11 @@ void PoreMonitor::restore(const std::vector<double>& state) {
   // Restart files written before the wall's hold was recorded hold the first
   // kWallForceX values; the hold then starts at 0 and is recorded from the next fluid step.
   // Files written before the pressure across the pore and the threshold ladder were recorded
-  // hold the first kPressureLossAcrossPore; those start at 0 and are recorded from the next
-  // fluid step.
+  // hold the first kPressureLossAcrossPore, those written before the deposit's own loads the
+  // first kDepositFluidForceX; the rest start at 0 and are recorded from the next fluid step.
   const std::size_t count = state.empty() ? 0 : std::size_t(state[0]);
-  const bool known = count == std::size_t(kCount) || count == std::size_t(kPressureLossAcrossPore) ||
-                     count == std::size_t(kWallForceX);
+  const bool known = count == std::size_t(kCount) || count == std::size_t(kDepositFluidForceX) ||
+                     count == std::size_t(kPressureLossAcrossPore) || count == std::size_t(kWallForceX);
   if (!known || state.size() < count + 2)
     throw std::invalid_argument(
         "pore monitor: the restart file holds another set of diagnostics (written by another "

@@ -50,6 +50,12 @@ struct Deposition {
   double length = 0.0;
   long long count = 0;
   long long on_wall = 0;  // of them, those the caller flags as touching the pore wall
+  // The loads along the flow on the deposited particles alone (the caller's per-particle
+  // forces, 0 where none are given): the deposit's own side of the paper's force balance,
+  // which the totals over every particle in the box mix with the wall's push on particles
+  // queued elsewhere (the outlet region, the pore's entrance face).
+  double fluid_force = 0.0;
+  double wall_force = 0.0;
   // Deposited counts under the threshold times kDepositSpeedLadder[i] (bonded, in the region).
   std::array<long long, kDepositSpeedLadder.size()> count_at_scaled_threshold{};
 };
@@ -58,11 +64,18 @@ struct Deposition {
 // of the centre line.
 bool in_pore_region(const Vec3& x, const PoreRegion& pore);
 
+// Per-particle forces along the flow, indexed like the view (either may be null).
+struct ParticleForcesAlongFlow {
+  const std::vector<double>* fluid = nullptr;  // the fluid's force on each particle
+  const std::vector<double>* wall = nullptr;   // the wall's
+};
+
 // on_wall (indexed like the view, may be null): which particles touch the wall (within the
-// adhesion range), to count the deposited ones that hold on to it directly.
+// adhesion range), to count the deposited ones that hold on to it directly. forces: summed
+// over the deposited particles into Deposition::fluid_force and wall_force.
 Deposition deposited(const ParticleView& view, const std::vector<char>& bonded, const PoreRegion& pore,
                      const DepositionCriteria& criteria, const lbm::Communicator& comm,
-                     const std::vector<char>* on_wall = nullptr);
+                     const std::vector<char>* on_wall = nullptr, const ParticleForcesAlongFlow& forces = {});
 
 // Counts owned particles whose centre crossed the plane x_axis = position since the previous
 // call (matched by id): +1 and +volume in the +axis direction, -1 and -volume back. Periodic

@@ -98,17 +98,25 @@ class PoreMonitor {
     // The deposited count under the speed threshold scaled by kDepositSpeedLadder[i], one
     // quantity per factor in that order (x 1/4, 1/2, 2, 4, 8, 16).
     kDepositedCountScaledSpeed,
-    kCount = kDepositedCountScaledSpeed + int(kDepositSpeedLadder.size())
+    // The fluid's and the wall's force along the flow on the deposited particles alone
+    // (force units; Deposition::fluid_force, wall_force): the deposit's own force balance.
+    // kHydroForceX and kWallForceX sum over every particle, the queue in the outlet region
+    // and a plug on the pore's entrance face among them.
+    kDepositFluidForceX = kDepositedCountScaledSpeed + int(kDepositSpeedLadder.size()),
+    kDepositWallForceX,
+    kCount
   };
 
   PoreMonitor(const PoreMonitorSetup& setup, const UnitConversion& units);
 
   // At a fluid step: the particles (lattice view of the step), which of them are bonded and
   // which touch the wall (indexed like the view), this rank's hydrodynamic force on them
-  // along the flow and the wall's (host units). Collective over `comm`.
+  // along the flow and the wall's (host units), in all and per particle. Collective over `comm`.
   struct ParticleLoads {
     double fluid_force = 0.0;  // this rank's hydrodynamic force on its particles along the flow
     double wall_force = 0.0;   // the wall's on them (0 where the host has no wall forces)
+    // The same per particle, indexed like the view (empty: not given, the deposit's are 0).
+    std::vector<double> fluid_along_flow, wall_along_flow;
   };
   void record_particles(const ParticleView& view, const std::vector<char>& bonded,
                         const std::vector<char>& on_wall, const ParticleLoads& local,
