@@ -537,6 +537,33 @@ class DepositHold(unittest.TestCase):
                                float(np.median([1.25 / (2.0 * 0.15 / 0.2), 1.25 / (2.0 * 0.35 / 0.4)])), places=12)
 
 
+    def test_the_deposits_own_balance_at_its_largest_count(self):
+        """Where the rows carry the deposit's own loads (f_pore[7], [26], [34], [35]), the
+        ratios are read at the row of the largest deposited count before each peak, with the
+        load of that row's P; the totals stay as they are."""
+        from figures import hold
+        with tempfile.TemporaryDirectory() as tmp:
+            folder = os.path.join(tmp, "a")
+            run = self.run_with_forces(folder, load=2.0, wall=1.0, fluid=1.25)
+            with open(os.path.join(folder, "log.liggghts")) as f:
+                log = f.read().splitlines()
+            # 10 deposited at step 3000 (4 on the wall, the fluid's 0.8 on them, the wall's
+            # -0.6), none before or after; P / P_out there is P_0 = 0.05
+            log = [line + " pore[7] pore[26] pore[34] pore[35]" if line.startswith("Step") else
+                   line + (" 10 4 0.8 -0.6" if line.split()[0] == "3000" else " 0 0 0 0")
+                   if line[:1].isdigit() else line for line in log]
+            with open(os.path.join(folder, "log.liggghts"), "w") as f:
+                f.write("\n".join(log) + "\n")
+            summary = dict(runs=[run], finished=1, study="hold", size="tiny", core_hours=0.0)
+            r = hold.analyze(summary, tmp)["ratios"]
+        # the bursts' peaks 0.2 and 0.4 P_out with load 2.0: at P 0.05 the loads are 0.5, 0.25
+        self.assertAlmostEqual(r["deposit_wall_over_load"]["median"], np.median([0.6 / 0.5, 0.6 / 0.25]), places=12)
+        self.assertAlmostEqual(r["deposit_fluid_over_load"]["median"], np.median([0.8 / 0.5, 0.8 / 0.25]), places=12)
+        self.assertAlmostEqual(r["deposit_wall_over_fluid"]["median"], 0.75, places=12)
+        self.assertAlmostEqual(r["deposit_on_wall_share"]["median"], 0.4, places=12)
+        self.assertAlmostEqual(r["wall_over_load"]["median"], 0.5, places=12)  # the totals' unchanged
+
+
 class StudyThreads(unittest.TestCase):
     """Runs side by side share the cores: each rank gets its share as OpenMP threads, unless
     the user chose (two runs of two threads each on two cores ran ten times slower)."""

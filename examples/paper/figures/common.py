@@ -46,17 +46,26 @@ def clean_pressure(run, share=0.25):
     return float(np.mean(rows)) if rows else np.nan
 
 
-def largest_deposit_before(columns, peak_step, window_steps):
-    """The deposit before its release, the figures' measure (DEPOSIT_MEASURES): (count,
-    V_dep, L_dep) of the thermo row with the largest deposited count (f_pore[7], f_pore[6],
-    f_pore[8]) among those of the `window_steps` DEM steps up to `peak_step`; None without
-    such rows. The burst record's median over the same window loses a deposit released more
-    than half a window before the peak."""
+def largest_deposit_row(columns, peak_step, window_steps):
+    """The index of the thermo row with the largest deposited count (f_pore[7]) among those
+    of the `window_steps` DEM steps up to `peak_step` (the first such row on a tie); None
+    without such rows."""
     steps = np.asarray(columns.get("Step", []), float)
     inside = np.flatnonzero((steps >= peak_step - window_steps) & (steps <= peak_step))
     if not len(inside) or "pore[7]" not in columns:
         return None
-    k = inside[int(np.argmax(np.asarray(columns["pore[7]"], float)[inside]))]
+    return int(inside[int(np.argmax(np.asarray(columns["pore[7]"], float)[inside]))])
+
+
+def largest_deposit_before(columns, peak_step, window_steps):
+    """The deposit before its release, the figures' measure (DEPOSIT_MEASURES): (count,
+    V_dep, L_dep) of the thermo row with the largest deposited count (f_pore[7], f_pore[6],
+    f_pore[8]) among those of the `window_steps` DEM steps up to `peak_step`
+    (largest_deposit_row); None without such rows. The burst record's median over the same
+    window loses a deposit released more than half a window before the peak."""
+    k = largest_deposit_row(columns, peak_step, window_steps)
+    if k is None:
+        return None
     at = [float(columns[c][k]) if c in columns else np.nan for c in ("pore[6]", "pore[8]")]
     return (int(round(columns["pore[7]"][k])), at[0], at[1])
 

@@ -10,6 +10,19 @@ pore's section, P pi D^2 / 4, so that P = 4 f_a L_dep / D. Per burst of every fi
 - excess load: the load of P - P_0 only (P_0: the run's particle-free pressure loss,
   figures.common.clean_pressure), the pressure the deposit adds.
 
+These sum over every particle in the box: at a peak the wall also holds the particles queued
+in the outlet region and any plug on the pore's entrance face, and the deposit may have left
+already (its largest count comes a few hundred fluid steps before the peak). So, where the
+rows carry them (in.pore prints them since the deposit's own loads were recorded), the same
+balance of the deposit alone, at the thermo row of the deposit the burst tears off (the
+figures' measure, figures.common.largest_deposit_row):
+
+- deposit wall, deposit fluid: the wall's and the fluid's force along the flow on the
+  deposited particles (-f_pore[35], f_pore[34]);
+- its load: P pi D^2 / 4 with P that row's P / P_out;
+- on-wall share: the deposited particles touching the wall over all deposited (f_pore[26] /
+  f_pore[7]).
+
 wall / fluid near 1 says the particles are at rest on the wall (no other body holds them);
 fluid / load below 1 says the fluid puts the rest of the load on the pore's solid walls
 directly: the flow through and around the deposit, and the clean pore's own loss P_0.
@@ -17,15 +30,39 @@ Medians over all bursts with 95 % intervals over runs (fit_stats.bootstrap: whol
 resampled) where there are two runs or more."""
 import numpy as np
 
-from figures.common import bursts, clean_pressure, finished_runs, plt, result, save, thermo
+from figures.common import (burst_window_dem_steps, bursts, clean_pressure, finished_runs,
+                            largest_deposit_row, plt, result, save, thermo)
 from fit_stats import bootstrap, fmt
 
 # The fluid's share of the load by the height of the peak [P_out]: does it rise as the
 # deposit closes the pore?
 PEAK_BANDS = ((0.0, 0.15), (0.15, 0.25), (0.25, float("inf")))
 
-RATIOS = (("wall_over_load", "wall / (P pi D^2/4)"), ("fluid_over_load", "fluid / (P pi D^2/4)"),
-          ("wall_over_fluid", "wall / fluid"), ("fluid_over_excess_load", "fluid / ((P - P_0) pi D^2/4)"))
+RATIOS = (("wall_over_load", "all particles: wall / (P pi D^2/4)"),
+          ("fluid_over_load", "all particles: fluid / (P pi D^2/4)"),
+          ("wall_over_fluid", "all particles: wall / fluid"),
+          ("fluid_over_excess_load", "all particles: fluid / ((P - P_0) pi D^2/4)"),
+          ("deposit_wall_over_load", "the deposit: wall / (P pi D^2/4)"),
+          ("deposit_fluid_over_load", "the deposit: fluid / (P pi D^2/4)"),
+          ("deposit_wall_over_fluid", "the deposit: wall / fluid"),
+          ("deposit_on_wall_share", "the deposit: share on the wall"))
+
+
+def deposit_forces(run):
+    """Per burst, at the thermo row of the deposit it tears off: (load, deposit wall, deposit
+    fluid, deposited count, of them on the wall); NaN where the rows lack the columns."""
+    columns = thermo(run["folder"])
+    window = burst_window_dem_steps(run["folder"], run["knobs"])
+    value = lambda name, k: float(columns[name][k]) if name in columns else np.nan  # noqa: E731
+    out = []
+    for b in bursts(run["folder"]):
+        k = largest_deposit_row(columns, b["step"], window)
+        if k is None or b["P_peak"] <= 0:
+            out.append((np.nan,) * 5)
+            continue
+        load = b["P_pi_D2_4"] * value("pore[16]", k) / b["P_peak"]
+        out.append((load, -value("pore[35]", k), value("pore[34]", k), value("pore[7]", k), value("pore[26]", k)))
+    return out
 
 
 def burst_forces(run):
@@ -45,13 +82,23 @@ def burst_forces(run):
     return out
 
 
-def ratios(forces):
-    """{ratio name: values} of one run's bursts (see RATIOS)."""
+def ratios(forces, own=None):
+    """{ratio name: values} of one run's bursts (see RATIOS), from burst_forces and, for the
+    deposit's own, deposit_forces (NaN without)."""
     a = np.asarray(forces, float).reshape(-1, 4)
     load, wall, fluid, excess = a.T
+    d = np.asarray(own if own is not None else [(np.nan,) * 5] * len(a), float).reshape(-1, 5)
+    own_load, own_wall, own_fluid, count, on_wall = d.T
     with np.errstate(divide="ignore", invalid="ignore"):
         return {"wall_over_load": wall / load, "fluid_over_load": fluid / load,
-                "wall_over_fluid": wall / fluid, "fluid_over_excess_load": fluid / excess}
+                "wall_over_fluid": wall / fluid, "fluid_over_excess_load": fluid / excess,
+                "deposit_wall_over_load": own_wall / own_load, "deposit_fluid_over_load": own_fluid / own_load,
+                "deposit_wall_over_fluid": own_wall / own_fluid,
+                "deposit_on_wall_share": np.where(count > 0, on_wall / count, np.nan)}
+
+
+def run_ratios(run):
+    return ratios(burst_forces(run), deposit_forces(run))
 
 
 def share_by_peak(summary):
@@ -59,7 +106,7 @@ def share_by_peak(summary):
     whose rows carry the fluid's force."""
     peaks, shares = [], []
     for run in finished_runs(summary):
-        r = ratios(burst_forces(run))["fluid_over_load"]
+        r = run_ratios(run)["fluid_over_load"]
         peaks += [b["P_peak"] for b in bursts(run["folder"])]
         shares += list(r)
     peaks, shares = np.asarray(peaks, float), np.asarray(shares, float)
@@ -78,7 +125,7 @@ def median_of_finite(x, y):
 
 
 def analyze(summary, out_dir):
-    runs = {run["name"]: ratios(burst_forces(run)) for run in finished_runs(summary)}
+    runs = {run["name"]: run_ratios(run) for run in finished_runs(summary)}
     table, texts = {}, []
     for key, label in RATIOS:
         groups = [(v[key], v[key]) for v in runs.values() if np.isfinite(v[key]).any()]
@@ -87,12 +134,15 @@ def analyze(summary, out_dir):
                           per_run={name: median_of_finite(None, v[key]) for name, v in runs.items()})
         if groups:
             texts.append(f"{label} {fmt(*value)}")
-    fig, axes = plt.subplots(1, 2, figsize=(9, 3.6))
+    fig, axes = plt.subplots(1, 3, figsize=(13, 3.8))
     for name, run in zip(runs, finished_runs(summary)):
         a = np.asarray(burst_forces(run), float).reshape(-1, 4)
+        d = np.asarray(deposit_forces(run), float).reshape(-1, 5)
         axes[0].plot(a[:, 0], a[:, 1], "o", ms=3, alpha=0.7, label=name)
         axes[1].plot(a[:, 2], a[:, 1], "o", ms=3, alpha=0.7)
-    for ax, xlabel in zip(axes, ("load P pi D^2 / 4 at the peak", "fluid's force on the particles")):
+        axes[2].plot(d[:, 0], d[:, 1], "o", ms=3, alpha=0.7)
+    for ax, xlabel in zip(axes, ("load P pi D^2 / 4 at the peak", "fluid's force on the particles",
+                                 "load at the deposit's largest count")):
         top = max([abs(v) for line in ax.get_lines() for v in line.get_xdata() if np.isfinite(v)] + [1e-30])
         ax.plot([0, top], [0, top], "k:", lw=1, label="all of it")
         ax.set_xlabel(xlabel + " [N]")
@@ -100,6 +150,8 @@ def analyze(summary, out_dir):
     axes[0].legend(fontsize=6)
     axes[0].set_title("the wall's hold against the paper's load", fontsize=9)
     axes[1].set_title("the wall's hold against the fluid's force", fontsize=9)
+    axes[2].set_ylabel("the wall's hold on the deposit alone [N]")
+    axes[2].set_title("the deposit's own hold (rows with f_pore[35] only)", fontsize=9)
     bands = share_by_peak(summary)
     texts += [f"fluid / load {b['median']:.2f} at {b['bursts']} peaks in [{b['low']:g}, {b['high']:g}) P_out"
               for b in bands if b["bursts"]]

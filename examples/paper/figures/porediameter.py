@@ -1,37 +1,48 @@
 """Fig. porediameter: the pressure peaks P [P_out] against L_dep / D over the eight pore
 diameters (inlet area scaled with D^2, L = 4.22, 10 seeds each); K of P_crit = K L_dep / D
 (paper: 0.91 +- 0.04; also on P - P_0 and with an intercept, figures.common.pressure_fits),
-and the theory P = 4 f_a L_dep / D with f_a measured from the model:
-the wall's hold on the particles along the flow (-f_walls[2], the total wall force in x) at
-the peak, per area of pore wall the deposit covers (pi D L_dep), in P_out. The wall also holds
-particles that are not in the deposit, so this f_a is an upper estimate."""
+and the theory P = 4 f_a L_dep / D with f_a measured from the model: the wall's hold on the
+deposit along the flow per area of pore wall it covers (pi D L_dep), in P_out. Where the rows
+carry it, the hold is the wall's force on the deposited particles alone (-f_pore[35]) at the
+row of the deposit the burst tears off (the figures' measure); older runs have only the
+wall's force on every particle at the peak (the burst record's wall_F, or -f_walls[2]), which
+also holds particles outside the deposit: results.json's f_a_from says which per burst."""
 import numpy as np
 
 from fit_stats import bootstrap, fmt, slope_through_origin, stratified_bootstrap
-from figures.common import (beside_fits, beside_results, beside_text, bursts, draw_beside, draw_fits,
-                            finished_runs, fits_text, p_out, plt, pressure_fits, resampled, result, run_points,
-                            save, thermo, with_largest_deposits)
+from figures.common import (beside_fits, beside_results, beside_text, burst_window_dem_steps, bursts,
+                            draw_beside, draw_fits, finished_runs, fits_text, largest_deposit_row, p_out,
+                            plt, pressure_fits, resampled, result, run_points, save, thermo,
+                            with_largest_deposits)
 
 PAPER_K = 0.91
 
 
 def _points(run):
-    """(L_dep / D, P_peak, f_a [P_out]) per burst of the run."""
+    """(L_dep / D, P_peak, f_a [P_out], where f_a comes from) per burst of the run."""
     D = float(run["knobs"]["D"])
     unit = p_out(run["folder"])  # rho c_s^2 in the script's units
     columns = thermo(run["folder"])
     steps = np.asarray(columns.get("Step", []))
     hold = np.asarray(columns.get("walls[2]", []))
+    own = np.asarray(columns.get("pore[35]", []), float)
+    window = burst_window_dem_steps(run["folder"], run["knobs"])
     out = []
     # the deposit every figure counts (figures.common.largest_deposit_before), as K takes it
     for b in with_largest_deposits(run, bursts(run["folder"]), columns):
-        f_a = np.nan
-        if b["deposit_L"] > 0 and "wall_F" in b:  # the burst record's own hold at the peak
-            f_a = -b["wall_F"] / (np.pi * D * b["deposit_L"]) / unit
-        elif len(hold) and b["deposit_L"] > 0:  # older records: the nearest thermo row
+        f_a, source = np.nan, "none"
+        k = largest_deposit_row(columns, b["step"], window) if len(own) else None
+        area = np.pi * D * b["deposit_L"]
+        if b["deposit_L"] <= 0:
+            pass
+        elif k is not None and np.isfinite(own[k]):  # the deposit's own hold
+            f_a, source = -own[k] / area / unit, "deposit"
+        elif "wall_F" in b:  # the burst record's hold on every particle at the peak
+            f_a, source = -b["wall_F"] / area / unit, "all particles"
+        elif len(hold):  # older records: the nearest thermo row
             k = int(np.argmin(abs(steps - b["step"])))
-            f_a = -hold[k] / (np.pi * D * b["deposit_L"]) / unit
-        out.append((b["deposit_L"] / D, b["P_peak"], f_a))
+            f_a, source = -hold[k] / area / unit, "all particles"
+        out.append((b["deposit_L"] / D, b["P_peak"], f_a, source))
     return out
 
 
@@ -130,4 +141,6 @@ def analyze(summary, out_dir):
                   save(fig, out_dir, "porediameter"),
                   K=K, K_excess=fits["excess_through_origin"], slope=fits["slope"],
                   intercept=fits["intercept"], f_a=f_a, diameter_law=law,
+                  f_a_from={source: sum(p[3] == source for ps in points for p in ps)
+                            for source in ("deposit", "all particles", "none")},
                   **beside_results(beside))
