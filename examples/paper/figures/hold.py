@@ -152,6 +152,8 @@ def analyze(summary, out_dir):
     axes[1].set_title("the wall's hold against the fluid's force", fontsize=9)
     axes[2].set_ylabel("the wall's hold on the deposit alone [N]")
     axes[2].set_title("the deposit's own hold (rows with f_pore[35] only)", fontsize=9)
+    if not any(np.isfinite(line.get_ydata()).any() for line in axes[2].get_lines()[:-1]):
+        axes[2].text(0.5, 0.5, "not recorded in these runs", transform=axes[2].transAxes, ha="center")
     bands = share_by_peak(summary)
     texts += [f"fluid / load {b['median']:.2f} at {b['bursts']} peaks in [{b['low']:g}, {b['high']:g}) P_out"
               for b in bands if b["bursts"]]
