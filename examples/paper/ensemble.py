@@ -132,9 +132,11 @@ def _knobs_file(run_dir):
     return os.path.join(run_dir, "knobs.json")
 
 
-# The knobs that say only how often a run saves itself, not what it computes (in.pore's
-# `restart` output leaves the atoms and the lattice as they are): a run whose knobs differ in
-# these alone resumes, and records the new ones, rather than starting anew.
+# The knobs that say only how often a run saves itself, not what it computes: a run whose
+# knobs differ in these alone resumes, and records the new ones, rather than starting anew.
+# Writing a restart file changes the trajectory at round-off (replay_window.py measured it),
+# as every resume does: a run resumed at another interval is another sample of the same
+# physics, as a resumed run always is, not the same bits.
 BOOKKEEPING_KNOBS = ("restart_every", "checkpoint_keep")
 
 

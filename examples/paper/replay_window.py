@@ -1,12 +1,14 @@
 #!/usr/bin/python3
 """A window of a study run replayed from one of its restart files, now with the VTK files the
-long run did not write. The same knobs, scene, driver and rank count resume the same state,
-and the VTK files leave the trajectory alone, so the replay is the run's own continuation from
-that file: bit for bit the run's rows where the run itself resumed from it (a sitting's end,
-run_study.py), and elsewhere, where the run went on without reading it, the same to round-off
-at first and then apart as DEM trajectories part (a resumed LIGGGHTS run rebuilds its
-neighbour lists). Its thermo rows are compared with the run's at every step both have, and it
-says where they part. This is how the paper's snapshot figure (collection) is drawn from a
+long run did not write. The same knobs, scene, driver and rank count resume the same state;
+the replay writes its restart files where the run did (writing one changes the trajectory at
+round-off, measured: a replay without them parted from its run at the run's first restart
+file) and the VTK files leave the trajectory alone, so the replay is the run's own
+continuation from that file: bit for bit the run's rows where the run itself resumed from it
+(a sitting's end, run_study.py) up to where the run was next stopped, and elsewhere, where the
+run went on without reading it, the same to round-off at first and then apart as DEM
+trajectories part (a resumed LIGGGHTS run rebuilds its neighbour lists). Its thermo rows are
+compared with the run's at every step both have, and it says where they part. This is how the paper's snapshot figure (collection) is drawn from a
 paper-size study run: a run of 10^6 fluid steps with a file every few hundred steps would
 fill a disk, a window of it does not.
 
@@ -14,10 +16,11 @@ fill a disk, a window of it does not.
                    [--vtk-every M] [--driver liggghts-lbm] [--ranks K] [--scene FILE]
 
 <run folder> is the study's runs/<name>/ (its knobs.json; the scene is the study's own copy,
-<study>/in.pore, unless --scene); FILE one of its restart files (restart.a, restart.b,
-restart_forced_liggghts_<step>.data) with the fluid checkpoint it names beside it. DIR
-receives what in.pore writes (log.liggghts, bursts.txt, fluid_vtk/, particles_vtk/) and
-knobs.json, replay.json (where it started, how far its rows agree with the run's). Then
+<study>/in.pore, unless --scene: the one the run read when it wrote FILE); FILE one of its
+restart files (restart.a, restart.b, restart_forced_liggghts_<step>.data) with the fluid
+checkpoint it names beside it. DIR receives a copy of the scene (LIGGGHTS reads a script while
+it runs), what in.pore writes (log.liggghts, bursts.txt, fluid_vtk/, particles_vtk/, restart
+files) and knobs.json, replay.json (where it started, how far its rows agree with the run's). Then
 
   render_snapshot.py DIR --keep      # the three snapshots, and snapshots.npz that redraws them
 """
@@ -26,6 +29,7 @@ import glob
 import json
 import os
 import re
+import shutil
 import subprocess
 import sys
 
@@ -49,15 +53,13 @@ def checkpoint_of(restart):
 
 
 def replay_knobs(knobs, restart, start, fluid_steps, vtk_every):
-    """The run's knobs, resumed from `restart`, ending N fluid steps later, with VTK files and
-    without restart files of its own."""
+    """The run's knobs, resumed from `restart`, ending N fluid steps later, with VTK files."""
     n_dem = studies.run_dem_steps_per_fluid_step(knobs)
     end = start + fluid_steps * n_dem
     if end > int(knobs["warmup"]) + int(knobs["steps"]):
         sys.exit(f"--fluid-steps {fluid_steps}: the window ends past the run's last step "
                  f"{int(knobs['warmup']) + int(knobs['steps'])}")
-    changed = dict(knobs, steps=end - int(knobs["warmup"]), vtk_every=vtk_every, restart_every=0,
-                   checkpoint_keep=0)
+    changed = dict(knobs, steps=end - int(knobs["warmup"]), vtk_every=vtk_every)
     return ensemble.resume_knobs(changed, os.path.abspath(restart))
 
 
@@ -99,12 +101,13 @@ def main():
 
     run_dir = os.path.abspath(args.run_dir)
     knobs = read_knobs(run_dir)
-    scene = os.path.abspath(args.scene or os.path.join(run_dir, "..", "..", "in.pore"))
     start, checkpoint = checkpoint_of(args.restart)
     out = os.path.abspath(args.out)
     if os.path.exists(os.path.join(out, "log.liggghts")):
         sys.exit(f"{out}: holds a replay already; give another --out")
     os.makedirs(out, exist_ok=True)
+    scene = os.path.join(out, "in.pore")
+    shutil.copyfile(args.scene or os.path.join(run_dir, "..", "..", "in.pore"), scene)
     # in.pore reads the checkpoint by the name the restart file holds, from the run's folder
     for path in glob.glob(os.path.join(os.path.dirname(os.path.abspath(args.restart)), checkpoint + ".*")):
         target = os.path.join(out, os.path.basename(path))
