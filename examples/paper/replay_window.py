@@ -20,7 +20,7 @@ fill a disk, a window of it does not.
 restart files (restart.a, restart.b, restart_forced_liggghts_<step>.data) with the fluid
 checkpoint it names beside it. DIR receives a copy of the scene (LIGGGHTS reads a script while
 it runs), what in.pore writes (log.liggghts, bursts.txt, fluid_vtk/, particles_vtk/, restart
-files) and knobs.json, replay.json (where it started, how far its rows agree with the run's). Then
+files) and knobs.json, cost.txt, replay.json (where it started, how far its rows agree with the run's). Then
 
   render_snapshot.py DIR --keep      # the three snapshots, and snapshots.npz that redraws them
 """
@@ -35,6 +35,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import ensemble  # noqa: E402
+import run_cost  # noqa: E402
 import studies  # noqa: E402
 from study_io import read_knobs, thermo  # noqa: E402
 
@@ -125,7 +126,7 @@ def main():
     # it); a rank's threads on a machine the study's runs already fill would wait on each other.
     os.environ.setdefault("OMP_NUM_THREADS", "1")
     print("replay: " + " ".join(cmd), flush=True)
-    with open(os.path.join(out, "stdout.txt"), "w") as log:
+    with open(os.path.join(out, "stdout.txt"), "w") as log, run_cost.LaunchClock([out], args.ranks):
         rc = subprocess.call(cmd, stdout=log, stderr=subprocess.STDOUT)
     agree = agreement(run_dir, out)
     record = dict(run=os.path.basename(run_dir), restart=os.path.basename(args.restart),
