@@ -14,6 +14,7 @@ fill a disk, a window of it does not.
 
   replay_window.py <run folder> --restart FILE --fluid-steps N --out DIR
                    [--vtk-every M] [--driver liggghts-lbm] [--ranks K] [--scene FILE]
+                   [--evidence EVIDENCE]
 
 <run folder> is the study's runs/<name>/ (its knobs.json; the scene is the study's own copy,
 <study>/in.pore, unless --scene: the one the run read when it wrote FILE); FILE one of its
@@ -23,6 +24,11 @@ it runs), what in.pore writes (log.liggghts, bursts.txt, fluid_vtk/, particles_v
 files) and knobs.json, cost.txt, replay.json (where it started, how far its rows agree with the run's). Then
 
   render_snapshot.py DIR --keep      # the three snapshots, and snapshots.npz that redraws them
+
+--evidence EVIDENCE does that too and keeps the replay as the repository's snapshot figure:
+its compact result (compact_study.py: knobs, bursts, thermo columns, snapshots.npz,
+replay.json, cost) in EVIDENCE/runs/<run>_window and EVIDENCE/summary.txt, a one-run study
+that `analyze.py EVIDENCE` draws (doc/paper/collection).
 """
 import argparse
 import glob
@@ -84,6 +90,19 @@ def agreement(run_dir, replay_dir):
                 first_difference=b["Step"][first[1]] if first else None, P_difference_there=difference)
 
 
+def keep_as_evidence(replay_dir, run_name, evidence):
+    """The replay's snapshot frames (render_snapshot --keep) and compact result kept in
+    `evidence` as the collection figure's one run."""
+    import compact_study
+    from render_snapshot import render
+    render(replay_dir, os.path.join(replay_dir, "collection.png"), keep=True)
+    name = f"{run_name}_window"
+    compact_study.compact_run(replay_dir, os.path.join(evidence, "runs", name))
+    with open(os.path.join(evidence, "summary.txt"), "w") as f:
+        f.write(f"study collection (paper, replay): 1 finished, 0 failed, 0 incomplete of 1 kept here\n"
+                f"  {name:<28} done\n")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -98,6 +117,7 @@ def main():
     parser.add_argument("--ranks", type=int, default=1,
                         help="MPI ranks: those of the run (run_study.py's default 1)")
     parser.add_argument("--scene", help="scene script (default: <study>/in.pore)")
+    parser.add_argument("--evidence", help="keep the replay as the repository's snapshot figure here")
     args = parser.parse_args()
 
     run_dir = os.path.abspath(args.run_dir)
@@ -137,6 +157,9 @@ def main():
     print(f"replay: exit {rc}; thermo rows in common with the run {agree['common']}, identical "
           f"{agree['identical']}, first difference at step {agree['first_difference']} "
           f"(P / P_out there {agree['P_difference_there']} apart, relative)")
+    if rc == 0 and args.evidence:
+        keep_as_evidence(out, record["run"], os.path.abspath(args.evidence))
+        print(f"replay: kept in {args.evidence}; draw it with analyze.py {args.evidence}")
     sys.exit(rc)
 
 

@@ -160,10 +160,12 @@ def snapshot(args, work):
     # reading the file, so the two part later, as the resume case shows).
     restarts = sorted((os.path.join(run_dir, n) for n in ("restart.a", "restart.b")), key=os.path.getmtime)
     records = {}
+    evidence = os.path.join(work, "evidence")
     for name, every in (("replay", "10"), ("replay_no_vtk", "0")):
+        kept = ["--evidence", evidence] if name == "replay" else []
         done = subprocess.run([args.python, os.path.join(args.repo, "examples", "paper", "replay_window.py"),
                                run_dir, "--restart", restarts[0], "--fluid-steps", "59", "--vtk-every", every,
-                               "--out", os.path.join(work, name), "--driver", args.driver],
+                               "--out", os.path.join(work, name), "--driver", args.driver, *kept],
                               capture_output=True, text=True, timeout=170)
         print(done.stdout[-2000:], done.stderr[-2000:], flush=True)
         path = os.path.join(work, name, "replay.json")
@@ -178,6 +180,16 @@ def snapshot(args, work):
     with_files, without = study_rows(replay), study_rows(os.path.join(work, "replay_no_vtk"))
     ok &= check("its VTK files leave the trajectory alone", with_files and with_files == without,
                 f"{len(with_files)} rows against {len(without)}", "every thermo row identical")
+    # The replay kept as the collection figure's evidence, which analyze.py draws.
+    analysed = subprocess.run([args.python, os.path.join(args.repo, "examples", "paper", "analyze.py"), evidence],
+                              capture_output=True, text=True, timeout=120)
+    print(analysed.stdout[-1000:], analysed.stderr[-1000:], flush=True)
+    results = json.load(open(os.path.join(evidence, "results.json"))) if analysed.returncode == 0 else {}
+    ok &= check("the replay kept as evidence and drawn from it", results.get("finished") == 1
+                and os.path.exists(os.path.join(evidence, "collection.png"))
+                and os.path.exists(os.path.join(evidence, "runs", "snapshot_window", "snapshots.npz")),
+                {k: results.get(k) for k in ("figure", "finished", "ours")},
+                "results.json of 1 finished run, collection.png, the kept frames")
     frames = sorted(os.listdir(os.path.join(replay, "fluid_vtk"))) if os.path.isdir(
         os.path.join(replay, "fluid_vtk")) else []
     ok &= check("the replay writes its VTK files", len([f for f in frames if f.endswith(".vti")]) >= 5,
