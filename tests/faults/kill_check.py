@@ -32,7 +32,7 @@ import subprocess
 import sys
 import time
 
-from liggghts_run import check, main, relative_difference, thermo_rows
+from liggghts_run import check, main, mpi_environment, relative_difference, thermo_rows
 
 N_DEM = 100        # in.kill's fluid step: a forced restart comes at a multiple of it
 KILL_STEPS = 60000
@@ -82,7 +82,7 @@ def start(h, script, variables, ranks, work, env=None):
     print("start:", " ".join(cmd[cmd.index("-in") + 1:]), flush=True)
     out = open(os.path.join(work, "out.txt"), "w")
     return subprocess.Popen(cmd, cwd=work, stdout=out, stderr=subprocess.STDOUT,
-                            env=dict(os.environ, **(env or {})), start_new_session=True)
+                            env=mpi_environment(env), start_new_session=True)
 
 
 def children(pid):
