@@ -16,8 +16,8 @@ VTK frames marked; it says how far the frame lies from the peak and, when P ther
 The run folder is what in.pore writes with vtk_every > 0: fluid_vtk/fluid_<fluid step>.vti
 (.pvti on several ranks), particles_vtk/particles_<DEM step>.vtp (id radius mass x v
 f_pore[1-3]), log.liggghts and bursts.txt. The three times: (2) the file nearest the peak of
-the largest burst, (1) the last file before it with the least deposited (f_pore[6]; nothing,
-in a run's first part), (3) the first file after that burst's minimum; a run without a burst
+the largest burst, (1) the pore least clogged before it (the lowest P / P_out with particles
+in: pick_times), (3) the first file after that burst's minimum; a run without a burst
 takes (2) at its largest P / P_out with particles in and (3) at its end, and says so in the
 title. --keep also writes <run>/snapshots.npz, the three frames (slices and particles, some
 hundred kB), from which the figure is redrawn once the VTK files are gone.
@@ -197,12 +197,16 @@ def render_peak(run_dir, out):
 
 def pick_times(run_dir, steps):
     """The three fluid steps (before, peak, after) among `steps` and a note on how they were
-    chosen. (1) is the last file before the burst's peak with the least deposited (f_pore[6],
-    none in a run's first part; a window replayed from a clogging run, replay_window.py, may
-    always hold some), so that (1) to (3) follow one deposit."""
+    chosen. (1) is the pore least clogged before the burst's peak: among the files before it
+    with particles in (Atoms > 0, the flow past its start-up), the one at the lowest P / P_out,
+    on a tie the one with the least deposited (f_pore[6]), then the latest. In a run's first
+    part that is the clean pore before any deposit; in a window replayed from a clogging run
+    (replay_window.py) the pore after the burst before, as the deposit that bursts starts to
+    form. The deposited count alone would not do there: it flickers between 0 and some 20
+    within a few hundred fluid steps as a creeping deposit's particles pass the speed bound."""
     columns = thermo(run_dir)
     rows = list(zip(columns.get("Step", []), columns.get("pore[6]", []),
-                    columns.get("pore[16]", [])))
+                    columns.get("pore[16]", []), columns.get("Atoms", [1.0] * len(columns.get("Step", [])))))
     timing = lattice_timing(run_dir)  # the run's own DEM steps per fluid step and fluid step
     fluid_step = lambda dem_step: dem_step / timing["n_dem"]  # noqa: E731
     nearest = lambda t: min(steps, key=lambda s: abs(s - t))  # noqa: E731
@@ -218,13 +222,12 @@ def pick_times(run_dir, steps):
         top = highest_peak(run_dir)[0] if rows else steps[-1] * timing["n_dem"]
         peak, after = nearest(fluid_step(top)), steps[-1]
         note = "no burst in this run: (2) at its largest P / P_out, (3) at its end"
-    deposited = {fluid_step(step): v_dep for step, v_dep, _ in rows}
-    candidates = [s for s in steps if s < peak and s in deposited]
-    if candidates:
-        least = min(deposited[s] for s in candidates)
-        before = max(s for s in candidates if deposited[s] == least)
-    else:
-        before = steps[0]
+    # each file's thermo row: the nearest one
+    row_steps = np.asarray([fluid_step(r[0]) for r in rows], float)
+    at = lambda s: rows[int(np.argmin(np.abs(row_steps - s)))]  # noqa: E731
+    earlier = [s for s in steps if s < peak] or [steps[0]]
+    candidates = [s for s in earlier if at(s)[3] > 0] or earlier if rows else earlier
+    before = min(candidates, key=lambda s: (at(s)[2], at(s)[1], -s)) if rows else candidates[-1]
     return (before, peak, after), note
 
 
@@ -300,14 +303,16 @@ def draw_collection(frames, out):
     print(f"wrote {out}: fluid steps {times}; {frames['note']}")
 
 
-def render(run_dir, out, keep=False):
+def render(run_dir, out, keep=False, name=None):
     """The snapshot figure of a run, from its VTK files or, where they are gone, from the
-    frames kept in <run>/snapshots.npz; keep=True writes that file. Returns the three steps."""
+    frames kept in <run>/snapshots.npz; keep=True writes that file, with `name` for the run
+    in the title (default: its folder's). Returns the three steps."""
     kept = os.path.join(run_dir, KEPT)
     if not fluid_files(run_dir) and os.path.exists(kept):
         frames = load_frames(kept)
     else:
         frames = collection_frames(run_dir)
+        frames["name"] = name or frames["name"]
         if keep:
             save_frames(frames, kept)
             print(f"kept the three frames in {kept} ({os.path.getsize(kept) / 1e3:.0f} kB)")

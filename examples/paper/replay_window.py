@@ -95,7 +95,8 @@ def keep_as_evidence(replay_dir, run_name, evidence):
     `evidence` as the collection figure's one run."""
     import compact_study
     from render_snapshot import render
-    render(replay_dir, os.path.join(replay_dir, "collection.png"), keep=True)
+    render(replay_dir, os.path.join(replay_dir, "collection.png"), keep=True,
+           name=f"{run_name}, a window replayed from its restart file")
     name = f"{run_name}_window"
     compact_study.compact_run(replay_dir, os.path.join(evidence, "runs", name))
     with open(os.path.join(evidence, "summary.txt"), "w") as f:

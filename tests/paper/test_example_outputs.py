@@ -209,9 +209,10 @@ class PeakSnapshot(unittest.TestCase):
             self.make_run(work)
             with contextlib.redirect_stdout(io.StringIO()):
                 times = render_snapshot.render(work, os.path.join(work, "collection.png"))
-        # (1) the last frame before the peak with the least deposited: none before the first
-        # deposit (step 500 000: fluid step 5000), (2) the frame nearest the highest peak with
-        # particles, (3) the run's last frame.
+        # (1) the frame before the peak at the lowest P with particles in (0.1 from 0 to 6000),
+        # of those the latest with the least deposited: none before the first deposit (step
+        # 500 000: fluid step 5000); (2) the frame nearest the highest peak with particles,
+        # (3) the run's last frame.
         self.assertEqual(tuple(times), (4000, 8000, 10000))
 
 
