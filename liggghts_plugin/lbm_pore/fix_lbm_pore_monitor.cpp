@@ -9,6 +9,7 @@
 #include "coupling/sphere_coupling.h"
 #include "error.h"
 #include "fix_lbm_pore.h"
+#include "liggghts_queries.h"
 #include "lbm/fluid_solver.h"
 #include "lbm/input_error.h"
 #include "modify.h"
@@ -55,15 +56,7 @@ void FixLbmPore::record_particles() {
   // With lubrication on, find_walls() searched this fluid step already, over a wider reach.
   loads.fluid_force = states_.mark_deposits(particles_, atoms, bonded_atoms_, options_.lubrication, *surface_,
                                             wall_points_, bonded_, on_wall_, loads.fluid_along_flow);
-  for (int f = 0; f < modify->nfix; ++f) {
-    int dim = 0;
-    const auto* wall = static_cast<const double*>(modify->fix[f]->extract("local_force", dim));
-    if (wall && dim == 1) loads.wall_force += wall[0];
-    const auto* per_atom = static_cast<const double*>(modify->fix[f]->extract("atom_wall_force_x", dim));
-    if (!per_atom || dim != 1) continue;
-    loads.wall_along_flow.resize(particles_.size(), 0.0);
-    for (std::size_t p = 0; p < particles_.num_owned(); ++p) loads.wall_along_flow[p] += per_atom[particles_.atom(p)];
-  }
+  lbm_pore::wall_forces_along_x(*modify, particles_, loads.wall_force, loads.wall_along_flow);
   monitor_->record_particles(particles_.view(), bonded_, on_wall_, loads, solver_->decomposition().comm);
 }
 

@@ -2,7 +2,9 @@
 
 #include <cstring>
 
+#include "fix.h"
 #include "fix_gravity.h"
+#include "lattice_particles.h"
 #include "modify.h"
 #include "neigh_list.h"
 #include "neighbor.h"
@@ -32,6 +34,19 @@ std::optional<coupling::Vec3> script_gravity(const LAMMPS_NS::Modify& modify) {
     for (int a = 0; a < 3; ++a) (*gravity)[a] += g[a];
   }
   return gravity;
+}
+
+void wall_forces_along_x(const LAMMPS_NS::Modify& modify, const LatticeParticles& particles, double& total,
+                         std::vector<double>& per_particle) {
+  for (int f = 0; f < modify.nfix; ++f) {
+    int dim = 0;
+    const auto* wall = static_cast<const double*>(modify.fix[f]->extract("local_force", dim));
+    if (wall && dim == 1) total += wall[0];
+    const auto* per_atom = static_cast<const double*>(modify.fix[f]->extract("atom_wall_force_x", dim));
+    if (!per_atom || dim != 1) continue;
+    per_particle.resize(particles.size(), 0.0);
+    for (std::size_t p = 0; p < particles.num_owned(); ++p) per_particle[p] += per_atom[particles.atom(p)];
+  }
 }
 
 }  // namespace lbm_pore

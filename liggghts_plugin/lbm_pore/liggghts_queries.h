@@ -1,6 +1,6 @@
 #pragma once
 // What fix lbm/pore reads from LIGGGHTS's other objects: the group's pairs of a neighbour
-// list and the acceleration of the script's fix gravity.
+// list, the acceleration of the script's fix gravity and the wall fixes' forces.
 #include <optional>
 #include <vector>
 
@@ -14,10 +14,19 @@ class NeighList;
 
 namespace lbm_pore {
 
+class LatticeParticles;
+
 // The pairs (i, j) of the list whose atoms are both in the group (mask & groupbit).
 std::vector<coupling::ParticlePair> group_pairs(const LAMMPS_NS::NeighList& list, const int* mask, int groupbit);
 
 // The sum of the accelerations of the script's fix gravity instances; none without one.
 std::optional<coupling::Vec3> script_gravity(const LAMMPS_NS::Modify& modify);
+
+// The wall fixes' force along x on this rank's atoms (fix wall/voxel's "local_force"), summed
+// into `total`, and per particle p of `particles` (its atom particles.atom(p), the owned
+// first) into `per_particle` ("atom_wall_force_x", in the atom order of their post_force of
+// this DEM step); `per_particle` stays empty without such a fix.
+void wall_forces_along_x(const LAMMPS_NS::Modify& modify, const LatticeParticles& particles, double& total,
+                         std::vector<double>& per_particle);
 
 }  // namespace lbm_pore
