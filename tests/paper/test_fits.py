@@ -348,6 +348,26 @@ class CompactedEvidence(unittest.TestCase):
                     self.assertAlmostEqual(a[key][0], b[key][0], places=6)
 
 
+class TimeMeans(unittest.TestCase):
+    """Means over time from a compact result, which keeps every row of the bursts' windows and
+    every tenth elsewhere, equal the full log's: rows weigh the time they stand for."""
+
+    def test_the_compacted_rows_give_the_full_rows_time_mean(self):
+        from figures import calibration
+        t = np.arange(0.0, 10000.0, 1.0)
+        y = np.where((t % 1000) > 900, 30.0, 2.0)  # a high count in each burst's window
+        kept = (np.arange(len(t)) % 10 == 0) | ((t % 1000) > 850)
+        self.assertGreater(abs(np.mean(y[kept]) - np.mean(y)), 2.0)  # the plain mean is biased
+        self.assertAlmostEqual(common.time_mean(t[kept], y[kept]), np.mean(y), delta=0.05)
+        self.assertAlmostEqual(common.time_mean(t, y), np.mean(y), delta=0.01)  # the ends weigh half
+        mean, low, high = calibration.block_mean(t[kept], y[kept], np.random.default_rng(1))
+        self.assertAlmostEqual(mean, np.mean(y), delta=0.05)
+        self.assertLessEqual(low, mean)
+        self.assertGreaterEqual(high, mean)
+        self.assertEqual(common.time_mean([5.0], [3.0]), 3.0)
+        self.assertTrue(np.isnan(common.time_mean([], [])))
+
+
 class BurstLaw(unittest.TestCase):
     """The calibration's check of the paper's law of the bursts, P = K L_dep / D, on bursts
     whose peaks lie exactly on P = P_0 + K L_dep / D: K on P - P_0 is K, through the origin on

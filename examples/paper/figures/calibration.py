@@ -22,7 +22,8 @@ import re
 import numpy as np
 
 from fit_stats import fmt
-from figures.common import bursts, clean_pressure, plt, result, save, thermo, with_largest_deposits
+from figures.common import (bursts, clean_pressure, plt, result, row_durations, save, thermo, time_mean,
+                            with_largest_deposits)
 from study_io import BURST_WINDOW, burst_window_dem_steps, lattice_timing
 
 CRITERION_COUNT, CRITERION_P = 15, (0.3, 0.6)
@@ -211,16 +212,21 @@ BLOCK = 2000.0  # the paper's fluid steps per block of the block bootstrap (burs
 
 
 def block_mean(t, y, rng, draws=2000):
-    """Mean of a time series and its 95 % interval from a block bootstrap (blocks of BLOCK
-    time units, so that the correlation within a burst cycle stays in a block)."""
+    """Mean of a time series over time and its 95 % interval from a block bootstrap (blocks
+    of BLOCK time units, so that the correlation within a burst cycle stays in a block). Rows
+    weigh the time they stand for (row_durations): a compact result keeps a burst's window
+    at every row and the rest at every tenth."""
     t, y = np.asarray(t, float), np.asarray(y, float)
     if len(y) < 2:
         return (np.nan, np.nan, np.nan)
+    w = row_durations(t)
     labels = ((t - t[0]) // BLOCK).astype(int)
-    blocks = [y[labels == b] for b in np.unique(labels)]
-    means = [np.mean(np.concatenate([blocks[i] for i in rng.integers(0, len(blocks), len(blocks))]))
-             for _ in range(draws)]
-    return (float(np.mean(y)), float(np.percentile(means, 2.5)), float(np.percentile(means, 97.5)))
+    blocks = [(y[labels == b] * w[labels == b]).sum() for b in np.unique(labels)]
+    spans = [w[labels == b].sum() for b in np.unique(labels)]
+    blocks, spans = np.asarray(blocks), np.asarray(spans)
+    picks = rng.integers(0, len(blocks), (draws, len(blocks)))
+    means = blocks[picks].sum(axis=1) / spans[picks].sum(axis=1)
+    return (time_mean(t, y), float(np.percentile(means, 2.5)), float(np.percentile(means, 97.5)))
 
 
 def run_times(run):

@@ -16,6 +16,26 @@ def times(run, steps):
     return np.asarray(steps, float) * lattice_timing(run["folder"])["dt_dem"]
 
 
+def row_durations(t):
+    """The time each thermo row stands for (half the gaps to its neighbours). A study's
+    compact result keeps every tenth row and every row of a burst's window, so a plain mean
+    over its rows would weigh the bursts' windows ten times; weighted by these, a mean over
+    the rows is the mean over time whichever rows were kept."""
+    t = np.asarray(t, float)
+    if len(t) < 2:
+        return np.ones_like(t)
+    gaps = np.diff(t)
+    return np.concatenate([[gaps[0] / 2], (gaps[:-1] + gaps[1:]) / 2, [gaps[-1] / 2]])
+
+
+def time_mean(t, y):
+    """The mean of y over time (rows weighted by row_durations); NaN without rows."""
+    y = np.asarray(y, float)
+    if len(y) == 0:
+        return np.nan
+    return float(np.average(y, weights=row_durations(t))) if len(y) > 1 else float(y[0])
+
+
 def burst_groups(summary, x_of, y_of):
     """Per finished run, (x list, y list) over its bursts: the groups fit_stats.bootstrap
     resamples."""
