@@ -27,10 +27,11 @@ from ensemble import run_state  # noqa: E402
 import run_cost  # noqa: E402
 
 # pore[27]: P across the pore; pore[28-33]: the deposited count under the scaled speed bounds;
-# pore[26], [34], [35]: the deposit's particles on the wall, the fluid's and the wall's force on it
+# pore[26], [34], [35], [36]: the deposit's particles on the wall, the fluid's, the wall's and
+# every force on it
 COLUMNS = ("Step", "Atoms", "pore[16]", "pore[17]", "pore[7]", "pore[6]", "pore[8]", "pore[10]",
            "walls[2]", "pore[14]", "pore[18]", "pore[27]") + tuple(f"pore[{i}]" for i in range(28, 34)) + \
-    ("pore[26]", "pore[34]", "pore[35]")
+    ("pore[26]", "pore[34]", "pore[35]", "pore[36]")
 
 
 def compact(study, dest, every=10):

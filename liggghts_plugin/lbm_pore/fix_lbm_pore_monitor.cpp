@@ -46,7 +46,8 @@ void FixLbmPore::check_fluid_state() {
 // within the cohesion range of another particle or the adhesion range of the wall; and the
 // loads along the flow on the particles, in all and per particle: the fluid's and, where a
 // fix exposes this rank's ("local_force" and "atom_wall_force_x", fix wall/voxel, whose
-// post_force of this DEM step ran before this end_of_step: the same atom order), the wall's.
+// post_force of this DEM step ran before this end_of_step: the same atom order), the wall's;
+// and every force on each, the atoms' f of this DEM step.
 void FixLbmPore::record_particles() {
   collect_group_pairs();
   const lbm_pore::AtomArrays atoms = atom_arrays();
@@ -57,6 +58,7 @@ void FixLbmPore::record_particles() {
   loads.fluid_force = states_.mark_deposits(particles_, atoms, bonded_atoms_, options_.lubrication, *surface_,
                                             wall_points_, bonded_, on_wall_, loads.fluid_along_flow);
   lbm_pore::wall_forces_along_x(*modify, particles_, loads.wall_force, loads.wall_along_flow);
+  lbm_pore::total_forces_along_x(atom->f, particles_, loads.total_along_flow);
   monitor_->record_particles(particles_.view(), bonded_, on_wall_, loads, solver_->decomposition().comm);
 }
 

@@ -49,4 +49,9 @@ void wall_forces_along_x(const LAMMPS_NS::Modify& modify, const LatticeParticles
   }
 }
 
+void total_forces_along_x(const double* const* f, const LatticeParticles& particles, std::vector<double>& per_particle) {
+  per_particle.assign(particles.size(), 0.0);
+  for (std::size_t p = 0; p < particles.num_owned(); ++p) per_particle[p] = f[particles.atom(p)][0];
+}
+
 }  // namespace lbm_pore

@@ -1,6 +1,6 @@
 #pragma once
 // What fix lbm/pore reads from LIGGGHTS's other objects: the group's pairs of a neighbour
-// list, the acceleration of the script's fix gravity and the wall fixes' forces.
+// list, the acceleration of the script's fix gravity, the wall fixes' forces and the atoms' own.
 #include <optional>
 #include <vector>
 
@@ -28,5 +28,10 @@ std::optional<coupling::Vec3> script_gravity(const LAMMPS_NS::Modify& modify);
 // this DEM step); `per_particle` stays empty without such a fix.
 void wall_forces_along_x(const LAMMPS_NS::Modify& modify, const LatticeParticles& particles, double& total,
                          std::vector<double>& per_particle);
+
+// Every force along x on each owned particle p of `particles` (the atoms' f, read at the
+// end of a DEM step: the contact laws', the walls' and the fluid's of that step), into
+// `per_particle` (indexed like the particles).
+void total_forces_along_x(const double* const* f, const LatticeParticles& particles, std::vector<double>& per_particle);
 
 }  // namespace lbm_pore

@@ -36,11 +36,14 @@ TEST(Diagnostics, DepositedVolumeCountsBondedSlowParticlesInThePore) {
   EXPECT_EQ(w.on_wall, 1);
   EXPECT_EQ(w.fluid_force, 0.0);  // no forces given
   // The loads on the deposited particles (1 and 6) alone, not on the others.
-  const std::vector<double> fluid{1.0, 2.0, 4.0, 8.0, 16.0, 32.0}, wall{-0.5, -1.0, -2.0, -4.0, -8.0, -0.25};
+  const std::vector<double> fluid{1.0, 2.0, 4.0, 8.0, 16.0, 32.0}, wall{-0.5, -1.0, -2.0, -4.0, -8.0, -0.25},
+      total{0.125, 3.0, 5.0, 7.0, 9.0, -0.0625};
   const Deposition f = deposited(p.view(), bonded6, pore, DepositionCriteria{}, lbm::Communicator{}, &on_wall,
-                                 {&fluid, &wall});
+                                 {&fluid, &wall, &total});
   EXPECT_EQ(f.fluid_force, 33.0);
   EXPECT_EQ(f.wall_force, -0.75);
+  EXPECT_EQ(f.total_force, 0.0625);
+  EXPECT_EQ(w.total_force, 0.0);
   EXPECT_EQ(f.count, w.count);
 }
 

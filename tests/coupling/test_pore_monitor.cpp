@@ -71,8 +71,10 @@ TEST(PoreMonitor, DepositsAndCrossingsInHostUnits) {
   set.add(2, {10.0, 5.5, 5.5}, {0, 0, 0}, 1.5);  // in the pore, at rest
   const lbm::Communicator serial;
   // Particle 2 (deposited) touches the wall; the wall holds them with -0.5 along the flow,
-  // of which -0.375 on particle 2; the fluid pushes particle 1 with 0.25 and 2 with 0.5.
-  monitor.record_particles(set.view(), {1, 1}, {0, 1}, {0.75, -0.5, {0.25, 0.5}, {-0.125, -0.375}}, serial);
+  // of which -0.375 on particle 2; the fluid pushes particle 1 with 0.25 and 2 with 0.5;
+  // every force on them sums to 0.0625 and 0.03125.
+  const PoreMonitor::ParticleLoads loads{0.75, -0.5, {0.25, 0.5}, {-0.125, -0.375}, {0.0625, 0.03125}};
+  monitor.record_particles(set.view(), {1, 1}, {0, 1}, loads, serial);
   const double V = 4.0 / 3.0 * M_PI * 1.5 * 1.5 * 1.5;
   EXPECT_NEAR(monitor.values()[PoreMonitor::kDepositedVolume], V * 8.0, 1e-12);
   EXPECT_EQ(monitor.values()[PoreMonitor::kDepositedCount], 1.0);
@@ -83,6 +85,7 @@ TEST(PoreMonitor, DepositsAndCrossingsInHostUnits) {
   // The deposit's own loads: particle 2's alone, not the totals over both.
   EXPECT_EQ(monitor.values()[PoreMonitor::kDepositFluidForceX], 0.5);
   EXPECT_EQ(monitor.values()[PoreMonitor::kDepositWallForceX], -0.375);
+  EXPECT_EQ(monitor.values()[PoreMonitor::kDepositTotalForceX], 0.03125);
   // The count under the scaled speed thresholds: particle 2 is at rest, under all of them.
   for (std::size_t i = 0; i < kDepositSpeedLadder.size(); ++i)
     EXPECT_EQ(monitor.values()[PoreMonitor::kDepositedCountScaledSpeed + i], 1.0);
@@ -97,23 +100,23 @@ TEST(PoreMonitor, DepositsAndCrossingsInHostUnits) {
   EXPECT_EQ(monitor.burst_value(-1, 3), 0.0);
   EXPECT_EQ(monitor.burst_value(2, BurstRecord::kColumns), 0.0);
 
-  monitor.record_particles(set.view(), {1, 1}, {0, 1}, {0.75, -0.5, {0.25, 0.5}, {-0.125, -0.375}}, serial);
+  monitor.record_particles(set.view(), {1, 1}, {0, 1}, loads, serial);
   PoreMonitor resumed(setup, units);
   resumed.restore(monitor.state());
   EXPECT_EQ(resumed.values(), monitor.values());
   // States written by earlier versions, which recorded only the first kWallForceX values
   // (before the wall's hold), kPressureLossAcrossPore (before the pressure across the pore
-  // and the speed ladder) or kDepositFluidForceX (before the deposit's own loads), restore
-  // with the rest 0.
+  // and the speed ladder), kDepositFluidForceX (before the deposit's own loads) or
+  // kDepositTotalForceX (before every force on the deposit), restore with the rest 0.
   for (const int written : {int(PoreMonitor::kWallForceX), int(PoreMonitor::kPressureLossAcrossPore),
-                            int(PoreMonitor::kDepositFluidForceX)}) {
+                            int(PoreMonitor::kDepositFluidForceX), int(PoreMonitor::kDepositTotalForceX)}) {
     std::vector<double> earlier = monitor.state();
     earlier.erase(earlier.begin() + 1 + written, earlier.begin() + 1 + PoreMonitor::kCount);
     earlier[0] = written;
     PoreMonitor upgraded(setup, units);
     upgraded.restore(earlier);
     std::vector<double> expected = monitor.values();
-    ASSERT_NE(expected[PoreMonitor::kDepositWallForceX], 0.0);
+    ASSERT_NE(expected[PoreMonitor::kDepositTotalForceX], 0.0);
     std::fill(expected.begin() + written, expected.end(), 0.0);
     EXPECT_EQ(upgraded.values(), expected) << written << " values written";
   }

@@ -558,9 +558,10 @@ class DepositHold(unittest.TestCase):
 
 
     def test_the_deposits_own_balance_at_its_largest_count(self):
-        """Where the rows carry the deposit's own loads (f_pore[7], [26], [34], [35]), the
-        ratios are read at the row of the largest deposited count before each peak, with the
-        load of that row's P; the totals stay as they are."""
+        """Where the rows carry the deposit's own loads (f_pore[7], [26], [34], [35], [36]),
+        the ratios are read at the row of the largest deposited count before each peak, with
+        the load of that row's P; the totals stay as they are. The other particles' hold is
+        what the fluid's push leaves after the wall's hold and the net force."""
         from figures import hold
         with tempfile.TemporaryDirectory() as tmp:
             folder = os.path.join(tmp, "a")
@@ -568,9 +569,9 @@ class DepositHold(unittest.TestCase):
             with open(os.path.join(folder, "log.liggghts")) as f:
                 log = f.read().splitlines()
             # 10 deposited at step 3000 (4 on the wall, the fluid's 0.8 on them, the wall's
-            # -0.6), none before or after; P / P_out there is P_0 = 0.05
-            log = [line + " pore[7] pore[26] pore[34] pore[35]" if line.startswith("Step") else
-                   line + (" 10 4 0.8 -0.6" if line.split()[0] == "3000" else " 0 0 0 0")
+            # -0.6, every force on them 0.05), none before or after; P / P_out there is P_0 = 0.05
+            log = [line + " pore[7] pore[26] pore[34] pore[35] pore[36]" if line.startswith("Step") else
+                   line + (" 10 4 0.8 -0.6 0.05" if line.split()[0] == "3000" else " 0 0 0 0 0")
                    if line[:1].isdigit() else line for line in log]
             with open(os.path.join(folder, "log.liggghts"), "w") as f:
                 f.write("\n".join(log) + "\n")
@@ -581,6 +582,10 @@ class DepositHold(unittest.TestCase):
         self.assertAlmostEqual(r["deposit_fluid_over_load"]["median"], np.median([0.8 / 0.5, 0.8 / 0.25]), places=12)
         self.assertAlmostEqual(r["deposit_wall_over_fluid"]["median"], 0.75, places=12)
         self.assertAlmostEqual(r["deposit_on_wall_share"]["median"], 0.4, places=12)
+        # others: 0.8 - 0.6 - 0.05 = 0.15 of loads 0.5 and 0.25; net 0.05
+        self.assertAlmostEqual(r["deposit_others_over_load"]["median"], np.median([0.15 / 0.5, 0.15 / 0.25]),
+                               places=12)
+        self.assertAlmostEqual(r["deposit_net_over_load"]["median"], np.median([0.05 / 0.5, 0.05 / 0.25]), places=12)
         self.assertAlmostEqual(r["wall_over_load"]["median"], 0.5, places=12)  # the totals' unchanged
 
 

@@ -24,10 +24,10 @@ Deposition deposited(const ParticleView& view, const std::vector<char>& bonded, 
                      const DepositionCriteria& criteria, const lbm::Communicator& comm,
                      const std::vector<char>* on_wall, const ParticleForcesAlongFlow& forces) {
   constexpr std::size_t kLadder = kDepositSpeedLadder.size();
-  constexpr std::size_t kFluid = 3 + kLadder, kWall = kFluid + 1;
-  // volume, count, on the wall, the count under each scaled threshold, then the fluid's and
-  // the wall's force on the deposited particles: one reduction.
-  std::array<double, kWall + 1> sums{};
+  constexpr std::size_t kFluid = 3 + kLadder, kWall = kFluid + 1, kTotal = kWall + 1;
+  // volume, count, on the wall, the count under each scaled threshold, then the fluid's, the
+  // wall's and every force on the deposited particles: one reduction.
+  std::array<double, kTotal + 1> sums{};
   const auto force_on = [](const std::vector<double>* f, std::size_t p) { return f && p < f->size() ? (*f)[p] : 0.0; };
   for (std::size_t p = 0; p < view.num_owned; ++p) {
     if (p >= bonded.size() || !bonded[p]) continue;
@@ -43,6 +43,7 @@ Deposition deposited(const ParticleView& view, const std::vector<char>& bonded, 
     if (on_wall && p < on_wall->size() && (*on_wall)[p]) sums[2] += 1.0;
     sums[kFluid] += force_on(forces.fluid, p);
     sums[kWall] += force_on(forces.wall, p);
+    sums[kTotal] += force_on(forces.total, p);
   }
   comm.sum(sums.data(), int(sums.size()));
   Deposition d;
@@ -52,6 +53,7 @@ Deposition deposited(const ParticleView& view, const std::vector<char>& bonded, 
   for (std::size_t i = 0; i < kLadder; ++i) d.count_at_scaled_threshold[i] = (long long)std::llround(sums[3 + i]);
   d.fluid_force = sums[kFluid];
   d.wall_force = sums[kWall];
+  d.total_force = sums[kTotal];
   d.length = pore.diameter > 0.0 ? d.volume / (kPi * pore.diameter * pore.diameter / 4.0) : 0.0;
   return d;
 }

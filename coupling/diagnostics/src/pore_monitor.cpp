@@ -55,12 +55,14 @@ void PoreMonitor::record_particles(const ParticleView& view, const std::vector<c
                                    const lbm::Communicator& comm) {
   const double dx = units_.inputs().dx;
   const double volume_unit = dx * dx * dx;
-  const ParticleForcesAlongFlow per_particle{local.fluid_along_flow.empty() ? nullptr : &local.fluid_along_flow,
-                                            local.wall_along_flow.empty() ? nullptr : &local.wall_along_flow};
+  const auto given = [](const std::vector<double>& f) { return f.empty() ? nullptr : &f; };
+  const ParticleForcesAlongFlow per_particle{given(local.fluid_along_flow), given(local.wall_along_flow),
+                                            given(local.total_along_flow)};
   const auto deposit = deposited(view, bonded, setup_.pore, setup_.criteria, comm, &on_wall, per_particle);
   values_[kDepositedOnWall] = double(deposit.on_wall);
   values_[kDepositFluidForceX] = deposit.fluid_force;
   values_[kDepositWallForceX] = deposit.wall_force;
+  values_[kDepositTotalForceX] = deposit.total_force;
   auto& v = values_;
   for (std::size_t i = 0; i < kDepositSpeedLadder.size(); ++i)
     v[kDepositedCountScaledSpeed + i] = double(deposit.count_at_scaled_threshold[i]);
@@ -217,9 +219,11 @@ void PoreMonitor::restore(const std::vector<double>& state) {
   // kWallForceX values; the hold then starts at 0 and is recorded from the next fluid step.
   // Files written before the pressure across the pore and the threshold ladder were recorded
   // hold the first kPressureLossAcrossPore, those written before the deposit's own loads the
-  // first kDepositFluidForceX; the rest start at 0 and are recorded from the next fluid step.
+  // first kDepositFluidForceX, those before every force on the deposit the first
+  // kDepositTotalForceX; the rest start at 0 and are recorded from the next fluid step.
   const std::size_t count = state.empty() ? 0 : std::size_t(state[0]);
-  const bool known = count == std::size_t(kCount) || count == std::size_t(kDepositFluidForceX) ||
+  const bool known = count == std::size_t(kCount) || count == std::size_t(kDepositTotalForceX) ||
+                     count == std::size_t(kDepositFluidForceX) ||
                      count == std::size_t(kPressureLossAcrossPore) || count == std::size_t(kWallForceX);
   if (!known || state.size() < count + 2)
     throw std::invalid_argument(

@@ -21,7 +21,12 @@ figures' measure, figures.common.largest_deposit_row):
   deposited particles (-f_pore[35], f_pore[34]);
 - its load: P pi D^2 / 4 with P that row's P / P_out;
 - on-wall share: the deposited particles touching the wall over all deposited (f_pore[26] /
-  f_pore[7]).
+  f_pore[7]);
+- net: every force along the flow on the deposited particles (f_pore[36], their mass times
+  acceleration), and the other particles' hold, what the fluid's push leaves after the wall's
+  hold and the net force: fluid - wall - net (f_pore[34] + f_pore[35] - f_pore[36]), the
+  contacts and cohesion of particles outside the deposit across its edge (those within it
+  cancel). fluid = wall + others + net closes the deposit's balance.
 
 wall / fluid near 1 says the particles are at rest on the wall (no other body holds them);
 fluid / load below 1 says the fluid puts the rest of the load on the pore's solid walls
@@ -45,12 +50,18 @@ RATIOS = (("wall_over_load", "all particles: wall / (P pi D^2/4)"),
           ("deposit_wall_over_load", "the deposit: wall / (P pi D^2/4)"),
           ("deposit_fluid_over_load", "the deposit: fluid / (P pi D^2/4)"),
           ("deposit_wall_over_fluid", "the deposit: wall / fluid"),
-          ("deposit_on_wall_share", "the deposit: share on the wall"))
+          ("deposit_on_wall_share", "the deposit: share on the wall"),
+          ("deposit_others_over_load", "the deposit: other particles' hold / (P pi D^2/4)"),
+          ("deposit_net_over_load", "the deposit: net force / (P pi D^2/4)"))
+
+
+OWN = 6  # the values deposit_forces gives per burst
 
 
 def deposit_forces(run):
     """Per burst, at the thermo row of the deposit it tears off: (load, deposit wall, deposit
-    fluid, deposited count, of them on the wall); NaN where the rows lack the columns."""
+    fluid, deposited count, of them on the wall, net force); NaN where the rows lack the
+    columns."""
     columns = thermo(run["folder"])
     window = burst_window_dem_steps(run["folder"], run["knobs"])
     value = lambda name, k: float(columns[name][k]) if name in columns else np.nan  # noqa: E731
@@ -58,10 +69,11 @@ def deposit_forces(run):
     for b in bursts(run["folder"]):
         k = largest_deposit_row(columns, b["step"], window)
         if k is None or b["P_peak"] <= 0:
-            out.append((np.nan,) * 5)
+            out.append((np.nan,) * OWN)
             continue
         load = b["P_pi_D2_4"] * value("pore[16]", k) / b["P_peak"]
-        out.append((load, -value("pore[35]", k), value("pore[34]", k), value("pore[7]", k), value("pore[26]", k)))
+        out.append((load, -value("pore[35]", k), value("pore[34]", k), value("pore[7]", k), value("pore[26]", k),
+                    value("pore[36]", k)))
     return out
 
 
@@ -87,14 +99,16 @@ def ratios(forces, own=None):
     deposit's own, deposit_forces (NaN without)."""
     a = np.asarray(forces, float).reshape(-1, 4)
     load, wall, fluid, excess = a.T
-    d = np.asarray(own if own is not None else [(np.nan,) * 5] * len(a), float).reshape(-1, 5)
-    own_load, own_wall, own_fluid, count, on_wall = d.T
+    d = np.asarray(own if own is not None else [(np.nan,) * OWN] * len(a), float).reshape(-1, OWN)
+    own_load, own_wall, own_fluid, count, on_wall, net = d.T
     with np.errstate(divide="ignore", invalid="ignore"):
         return {"wall_over_load": wall / load, "fluid_over_load": fluid / load,
                 "wall_over_fluid": wall / fluid, "fluid_over_excess_load": fluid / excess,
                 "deposit_wall_over_load": own_wall / own_load, "deposit_fluid_over_load": own_fluid / own_load,
                 "deposit_wall_over_fluid": own_wall / own_fluid,
-                "deposit_on_wall_share": np.where(count > 0, on_wall / count, np.nan)}
+                "deposit_on_wall_share": np.where(count > 0, on_wall / count, np.nan),
+                "deposit_others_over_load": (own_fluid - own_wall - net) / own_load,
+                "deposit_net_over_load": net / own_load}
 
 
 def run_ratios(run):
@@ -137,7 +151,7 @@ def analyze(summary, out_dir):
     fig, axes = plt.subplots(1, 3, figsize=(13, 3.8))
     for name, run in zip(runs, finished_runs(summary)):
         a = np.asarray(burst_forces(run), float).reshape(-1, 4)
-        d = np.asarray(deposit_forces(run), float).reshape(-1, 5)
+        d = np.asarray(deposit_forces(run), float).reshape(-1, OWN)
         axes[0].plot(a[:, 0], a[:, 1], "o", ms=3, alpha=0.7, label=name)
         axes[1].plot(a[:, 2], a[:, 1], "o", ms=3, alpha=0.7)
         axes[2].plot(d[:, 0], d[:, 1], "o", ms=3, alpha=0.7)

@@ -56,6 +56,11 @@ struct Deposition {
   // queued elsewhere (the outlet region, the pore's entrance face).
   double fluid_force = 0.0;
   double wall_force = 0.0;
+  // Every force on the deposited particles (the caller's per-particle total): their mass
+  // times their acceleration. What it leaves after the fluid's and the wall's is the push of
+  // particles outside the deposit (contacts and cohesion across its edge; those within it
+  // cancel in the sum).
+  double total_force = 0.0;
   // Deposited counts under the threshold times kDepositSpeedLadder[i] (bonded, in the region).
   std::array<long long, kDepositSpeedLadder.size()> count_at_scaled_threshold{};
 };
@@ -68,11 +73,12 @@ bool in_pore_region(const Vec3& x, const PoreRegion& pore);
 struct ParticleForcesAlongFlow {
   const std::vector<double>* fluid = nullptr;  // the fluid's force on each particle
   const std::vector<double>* wall = nullptr;   // the wall's
+  const std::vector<double>* total = nullptr;  // every force on it (contacts, wall, fluid)
 };
 
 // on_wall (indexed like the view, may be null): which particles touch the wall (within the
 // adhesion range), to count the deposited ones that hold on to it directly. forces: summed
-// over the deposited particles into Deposition::fluid_force and wall_force.
+// over the deposited particles into Deposition::fluid_force, wall_force and total_force.
 Deposition deposited(const ParticleView& view, const std::vector<char>& bonded, const PoreRegion& pore,
                      const DepositionCriteria& criteria, const lbm::Communicator& comm,
                      const std::vector<char>* on_wall = nullptr, const ParticleForcesAlongFlow& forces = {});

@@ -104,6 +104,9 @@ class PoreMonitor {
     // and a plug on the pore's entrance face among them.
     kDepositFluidForceX = kDepositedCountScaledSpeed + int(kDepositSpeedLadder.size()),
     kDepositWallForceX,
+    // Every force along the flow on the deposited particles (Deposition::total_force): minus
+    // the two above, the push of particles outside the deposit on it.
+    kDepositTotalForceX,
     kCount
   };
 
@@ -115,8 +118,9 @@ class PoreMonitor {
   struct ParticleLoads {
     double fluid_force = 0.0;  // this rank's hydrodynamic force on its particles along the flow
     double wall_force = 0.0;   // the wall's on them (0 where the host has no wall forces)
-    // The same per particle, indexed like the view (empty: not given, the deposit's are 0).
-    std::vector<double> fluid_along_flow, wall_along_flow;
+    // The same per particle, and every force on each (the host's total), indexed like the
+    // view (empty: not given, the deposit's are 0).
+    std::vector<double> fluid_along_flow, wall_along_flow, total_along_flow;
   };
   void record_particles(const ParticleView& view, const std::vector<char>& bonded,
                         const std::vector<char>& on_wall, const ParticleLoads& local,
