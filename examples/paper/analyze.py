@@ -3,12 +3,16 @@
 name (figures/<study>.py), writes <study>/results.json and the plot, prints the row of
 doc/paper.md (paper's value, ours with its 95 % bootstrap interval over runs, run cost).
 
-Usage: analyze.py <study folder> [--figure NAME] [--as-it-stands] [--out DIR] [--with FOLDER ...]
+Usage: analyze.py <study folder> [--figure NAME] [--runs REGEX] [--as-it-stands] [--out DIR]
+                  [--with FOLDER ...]
 (run_study.py calls it after the runs)
 
 --figure analyses the folder's runs as another figure: e.g. the single-burst figure from the
 largest burst among a seed ensemble, `analyze.py studies/dropvol --figure singlejump`
 (results in <folder>/<NAME>/).
+--runs REGEX analyses only the runs whose names match (and counts only their cost): the
+single-burst figure from one run of a study, `analyze.py doc/paper/porediameter --figure
+singlejump --runs '^D_3.52_seed_400009$' --out doc/paper`.
 --as-it-stands also takes the runs cut short or still under way, with the rows and bursts they
 have so far (a paper-length run built up over several sittings); the results name them.
 --with FOLDER takes the finished runs of another study folder (or its compacted evidence)
@@ -21,11 +25,13 @@ import argparse
 import importlib
 import json
 import os
+import re
 import sys
 
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import run_cost  # noqa: E402
 from study_io import kept_thermo, load_summary  # noqa: E402
 
 
@@ -66,8 +72,20 @@ def add_runs_of(summary, folder):
     summary["finished"] = sum(1 for r in summary["runs"] if r["state"] == "done")
 
 
-def analyze(study_dir, figure=None, as_it_stands=False, out=None, with_folders=()):
+def keep_runs_matching(summary, pattern):
+    """The summary with only the runs whose names match `pattern` (re.search), their finished
+    count and their cost (exact where each kept its cost.txt, run_cost)."""
+    summary["runs"] = [r for r in summary["runs"] if re.search(pattern, r["name"])]
+    if not summary["runs"]:
+        raise SystemExit(f"--runs {pattern!r}: no run of the study matches")
+    summary["finished"] = sum(r["state"] == "done" for r in summary["runs"])
+    summary["core_hours"], summary["core_hours_exact"] = run_cost.study_core_hours(r["folder"] for r in summary["runs"])
+
+
+def analyze(study_dir, figure=None, as_it_stands=False, out=None, with_folders=(), runs=None):
     summary = load_summary(study_dir)
+    if runs:
+        keep_runs_matching(summary, runs)
     for folder in with_folders:
         add_runs_of(summary, folder)
     partial = take_runs_as_they_stand(summary, study_dir) if as_it_stands else []
@@ -98,9 +116,10 @@ if __name__ == "__main__":
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("study_dir")
     parser.add_argument("--figure")
+    parser.add_argument("--runs", metavar="REGEX", help="only the runs whose names match")
     parser.add_argument("--as-it-stands", action="store_true")
     parser.add_argument("--out", help="folder for the results and the plot (default: the study's)")
     parser.add_argument("--with", dest="with_folders", action="append", default=[], metavar="FOLDER",
                         help="take the runs of another study folder beside the study's own")
     args = parser.parse_args()
-    analyze(args.study_dir, args.figure, args.as_it_stands, args.out, args.with_folders)
+    analyze(args.study_dir, args.figure, args.as_it_stands, args.out, args.with_folders, args.runs)

@@ -729,6 +729,13 @@ class AnalysisWithOtherRuns(unittest.TestCase):
             self.assertEqual(summary["finished"], 2)
             self.assertAlmostEqual(summary["core_hours"], 3.0)
             self.assertTrue(summary["core_hours_exact"])
+            # --runs: only the matching runs, their count and their cost
+            analyze.keep_runs_matching(summary, "^paper_run/")
+            self.assertEqual([r["name"] for r in summary["runs"]], ["paper_run/run0"])
+            self.assertEqual(summary["finished"], 1)
+            self.assertAlmostEqual(summary["core_hours"], 2.0)
+            with self.assertRaises(SystemExit):
+                analyze.keep_runs_matching(summary, "^no_such_run$")
 
 
 class CommittedRuns(unittest.TestCase):
