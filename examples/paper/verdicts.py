@@ -51,6 +51,9 @@ def porediameter(r):
     K, a = law.get("K"), law.get("a")
     k, e = _value(K), _value(a)
     ours = f"K {_fmt(K)}, exponent of D {_fmt(a)} (intervals over seeds)"
+    across = r.get("diameter_law_across_pore", {})
+    if math.isfinite(_value(across.get("K"))):
+        ours += f"; P across the pore, beside: K {_fmt(across['K'])}, exponent {_fmt(across['a'])}"
     if not math.isfinite(k):  # one diameter so far: its bursts' K, not yet the law over D
         ours = (f"K {_fmt(r.get('K_excess'))} over the bursts of {r.get('finished')} run(s); "
                 "the law over D not yet")

@@ -701,6 +701,45 @@ class DiameterLaw(unittest.TestCase):
             self.assertTrue(k_low < K < k_high and a_low < a < a_high)
             self.assertLess(a_high - a_low, 0.3)
 
+    def test_beside_it_the_law_with_P_across_the_pore(self):
+        """P read across the pore (f_pore[27]) at the thermo row of each peak, with P_0 read
+        there too: runs whose f_pore[27] is 0.8 of f_pore[16] everywhere give 0.8 of K and the
+        same exponent; a peak without a thermo row near it is left out, not misread."""
+        from figures import porediameter
+        with tempfile.TemporaryDirectory() as tmp:
+            runs, rows_of_D = [], {}
+            for D in (2.11, 3.52):
+                lengths = [0.5, 1.0, 2.0, 3.0]
+                rows = rows_of_D[D] = [(0.0, L, 0.01 + 0.9 * L / D) for L in lengths]
+                run = write_run(os.path.join(tmp, f"D_{D}"), 0.01, rows, D=D,
+                                deposits=[(10, 0.0, L) for L in lengths])
+                log_path = os.path.join(run["folder"], "log.liggghts")
+                with open(log_path) as f:
+                    lines = f.read().splitlines()
+                names = HEADER.split() + ["pore[27]"]
+                out = [lines[0], " ".join(names)]
+                for line in lines[2:]:
+                    out.append(line + f" {0.8 * float(line.split()[HEADER.split().index('pore[16]')])!r}")
+                for k, (_, _, p) in enumerate(rows):
+                    row = dict.fromkeys(names, 0.0)
+                    row.update({"Step": 10000 + 100 * k, "pore[16]": p, "pore[27]": 0.8 * p})
+                    out.append(" ".join(f"{row[n]!r}" for n in names))
+                with open(log_path, "w") as f:
+                    f.write("\n".join(out) + "\n")
+                runs.append(run)
+            summary = dict(runs=runs, finished=len(runs))
+            faces = porediameter.diameter_law(summary, deposit="median")
+            across = porediameter.diameter_law(summary, deposit="median", pressure="across")
+            from figures import common
+            near, far = dict(step=10100, P_peak=0.5), dict(step=10 ** 7, P_peak=0.5)  # far: no row near
+            self.assertEqual([b["P_peak"] for b in common.across_pore_peaks(runs[0], [near, far])],
+                             [0.8 * rows_of_D[2.11][1][2]])
+        self.assertAlmostEqual(faces["K"][0], 0.9, places=9)
+        self.assertAlmostEqual(across["K"][0], 0.72, places=9)
+        self.assertAlmostEqual(across["a"][0], faces["a"][0], places=9)
+        with self.assertRaises(ValueError):
+            common.run_points(runs[0], lambda r, b: 1.0, pressure="inlet")
+
 
 class AnalysisWithOtherRuns(unittest.TestCase):
     """analyze.py --with: the runs of another study folder beside the study's own (dropvol's

@@ -55,13 +55,13 @@ def burst_fit(summary, x_key, statistic):
     return groups, bootstrap(groups, statistic), bootstrap(groups, pearson)
 
 
-def clean_pressure(run, share=0.25):
+def clean_pressure(run, share=0.25, column="pore[16]"):
     """P_0 [P_out]: the run's own particle-free pressure loss, the mean of P / P_out
-    (f_pore[16]) over the thermo rows of the last `share` of its warm-up (the start-up
-    transient is over by then; in.pore's warm-up). NaN without such rows."""
+    (f_pore[16], or `column`) over the thermo rows of the last `share` of its warm-up (the
+    start-up transient is over by then; in.pore's warm-up). NaN without such rows."""
     columns = thermo(run["folder"])
     warmup = float(run["knobs"].get("warmup", 0))
-    rows = [p for s, p in zip(columns.get("Step", []), columns.get("pore[16]", []))
+    rows = [p for s, p in zip(columns.get("Step", []), columns.get(column, []))
             if (1 - share) * warmup < s <= warmup]
     return float(np.mean(rows)) if rows else np.nan
 
@@ -129,20 +129,48 @@ def resampled(groups):
 # largest is the deposit, not a fluctuation. The window's median and the count at the peak
 # are shown beside it.
 DEPOSIT_MEASURES = ("largest", "median", "peak")
+# Where the pressure loss is read: between the box's open faces (the burst records' P_peak,
+# f_pore[16], the figures' measure) or across the pore (f_pore[27], between the node planes
+# next to the pore's ends, "on both sides of the pore" as the paper words it), beside it.
+PRESSURES = {"faces": "pore[16]", "across": "pore[27]"}
 
 
-def run_points(run, x_of, deposit="largest"):
+def across_pore_peaks(run, rows):
+    """The rows (bursts) with P_peak read across the pore: f_pore[27] at the thermo row
+    nearest each peak; a burst without a row within a hundredth of the burst window of its
+    peak (in.pore's thermo rows: one every hundredth) or a run without the column is left
+    out."""
+    columns = thermo(run["folder"])
+    if "pore[27]" not in columns or not columns.get("Step"):
+        return []
+    steps = np.asarray(columns["Step"], float)
+    across = np.asarray(columns["pore[27]"], float)
+    near = burst_window_dem_steps(run["folder"], run["knobs"]) / 100
+    out = []
+    for b in rows:
+        k = int(np.argmin(np.abs(steps - b["step"])))
+        if abs(steps[k] - b["step"]) <= near and np.isfinite(across[k]):
+            out.append(dict(b, P_peak=float(across[k])))
+    return out
+
+
+def run_points(run, x_of, deposit="largest", pressure="faces"):
     """One run's bursts as (x, P_peak, P_peak - P_0) lists, x = x_of(run, burst) with the
-    burst's deposit counted by `deposit` (pressure_fits); the last list is empty when the run
-    has no clean pressure P_0 (clean_pressure)."""
+    burst's deposit counted by `deposit` (pressure_fits) and the pressure read where
+    `pressure` says (PRESSURES; P_0 read at the same place); the last list is empty when the
+    run has no clean pressure P_0 (clean_pressure)."""
     if deposit not in DEPOSIT_MEASURES:
         raise ValueError(f"deposit must be one of {', '.join(DEPOSIT_MEASURES)}, not {deposit!r}")
+    if pressure not in PRESSURES:
+        raise ValueError(f"pressure must be one of {', '.join(PRESSURES)}, not {pressure!r}")
     rows = bursts(run["folder"])
     if deposit == "largest":
         rows = with_largest_deposits(run, rows)
     elif deposit == "peak":
         rows = at_the_peak(rows)
-    p0 = clean_pressure(run)
+    if pressure == "across":
+        rows = across_pore_peaks(run, rows)
+    p0 = clean_pressure(run, column=PRESSURES[pressure])
     x = [x_of(run, b) for b in rows]
     return x, [b["P_peak"] for b in rows], [b["P_peak"] - p0 for b in rows] if np.isfinite(p0) else []
 

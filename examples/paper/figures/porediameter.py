@@ -6,7 +6,10 @@ deposit along the flow per area of pore wall it covers (pi D L_dep), in P_out. W
 carry it, the hold is the wall's force on the deposited particles alone (-f_pore[35]) at the
 row of the deposit the burst tears off (the figures' measure); older runs have only the
 wall's force on every particle at the peak (the burst record's wall_F, or -f_walls[2]), which
-also holds particles outside the deposit: results.json's f_a_from says which per burst."""
+also holds particles outside the deposit: results.json's f_a_from says which per burst.
+Beside the law (never instead of it), the same procedure with P read across the pore
+(f_pore[27]) rather than between the box's faces: the queue in the outlet region and a plug
+on the pore's entrance face add to the second only."""
 import numpy as np
 
 from fit_stats import bootstrap, fmt, slope_through_origin, stratified_bootstrap
@@ -67,15 +70,16 @@ def _law(diameters):
     return statistic
 
 
-def diameter_law(summary, deposit="largest"):
+def diameter_law(summary, deposit="largest", pressure="faces"):
     """The paper's procedure for P = K L_dep / D^a: per pore diameter D the slope s_D of
     P - P_0 against L_dep through the origin over that D's runs, then s_D against D in
     log-log (_law). Intervals over seeds: a bootstrap that resamples each diameter's runs
-    within it (fit_stats.stratified_bootstrap), not over bursts. Returns the diameters, the
-    slopes with their intervals, K and a."""
+    within it (fit_stats.stratified_bootstrap), not over bursts. pressure: where P is read
+    (figures.common.PRESSURES). Returns the diameters, the slopes with their intervals, K
+    and a."""
     by_D = {}
     for run in finished_runs(summary):
-        x, _, excess = run_points(run, lambda r, b: b["deposit_L"], deposit)
+        x, _, excess = run_points(run, lambda r, b: b["deposit_L"], deposit, pressure)
         if len(excess):
             by_D.setdefault(float(run["knobs"]["D"]), []).append((x, excess))
     diameters = sorted(by_D)
@@ -86,10 +90,17 @@ def diameter_law(summary, deposit="largest"):
     return dict(D=diameters, slope_per_D=slopes, runs_per_D=[len(g) for g in strata], K=K, a=a)
 
 
-def _draw_law(ax, law):
-    """The slopes per diameter against D in log-log, the fitted K D^-a and the paper's K / D."""
+def _draw_law(ax, law, across=None):
+    """The slopes per diameter against D in log-log, the fitted K D^-a and the paper's K / D;
+    beside them (hollow) the same with P read across the pore."""
     if not law["D"]:
         return
+    if across and across["D"]:
+        s_across = [v[0] for v in across["slope_per_D"]]
+        label = "the same, P across the pore (f_pore[27])"
+        if np.isfinite(across["K"][0]):
+            label += f": K {fmt(*across['K'])}, a {fmt(*across['a'])}"
+        ax.plot(across["D"], s_across, "o", mfc="none", color="C2", label=label)
     D = np.asarray(law["D"])
     s = np.asarray([v[0] for v in law["slope_per_D"]])
     err = np.asarray([[v[0] - v[1], v[2] - v[0]] for v in law["slope_per_D"]]).T
@@ -103,8 +114,10 @@ def _draw_law(ax, law):
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlabel("D [d]")
+    if across and np.isfinite(across["K"][0]):
+        ax.plot(xs, across["K"][0] * xs ** -across["a"][0], "C2:")
     ax.set_ylabel("slope of P on L_dep [P_out / d]")
-    ax.legend(fontsize=7)
+    ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.13))
 
 
 def analyze(summary, out_dir):
@@ -117,7 +130,8 @@ def analyze(summary, out_dir):
     f_a_groups = [([p[2] for p in ps if np.isfinite(p[2])],) * 2 for ps in points]
     f_a = bootstrap(resampled(f_a_groups)[0], lambda x, y: float(np.mean(x)) if len(x) else np.nan)
     law = diameter_law(summary)
-    fig, (ax, ax_law) = plt.subplots(1, 2, figsize=(11, 6.5))
+    law_across = diameter_law(summary, pressure="across")
+    fig, (ax, ax_law) = plt.subplots(1, 2, figsize=(14, 7))
     for D in sorted({float(run["knobs"]["D"]) for run in runs}):
         x = [p[0] for run, ps in zip(runs, points) if float(run["knobs"]["D"]) == D for p in ps]
         y = [p[1] for run, ps in zip(runs, points) if float(run["knobs"]["D"]) == D for p in ps]
@@ -132,15 +146,16 @@ def analyze(summary, out_dir):
     ax.set_ylabel("P_peak [P_out]")
     # below the axes: above them it hid the bursts of the narrow pores
     ax.legend(fontsize=7, ncol=2, loc="upper center", bbox_to_anchor=(0.5, -0.13))
-    _draw_law(ax_law, law)
+    _draw_law(ax_law, law, law_across)
     return result(summary, "porediameter", "K in P = K L_dep / D; theory 4 f_a",
                   f"{PAPER_K} +- 0.04; f_a = K/4 = {PAPER_K / 4:.3g}",
                   f"K {fits_text(fits)}; by the paper's procedure (a slope per D, then the slopes "
                   f"against D; intervals over seeds): P - P_0 = K L_dep / D^a with K {fmt(*law['K'])}, "
-                  f"a {fmt(*law['a'])}; f_a = {fmt(*f_a)}; K {beside_text(beside)}",
+                  f"a {fmt(*law['a'])}; beside it, P across the pore (f_pore[27]): K {fmt(*law_across['K'])}, "
+                  f"a {fmt(*law_across['a'])}; f_a = {fmt(*f_a)}; K {beside_text(beside)}",
                   save(fig, out_dir, "porediameter"),
                   K=K, K_excess=fits["excess_through_origin"], slope=fits["slope"],
-                  intercept=fits["intercept"], f_a=f_a, diameter_law=law,
+                  intercept=fits["intercept"], f_a=f_a, diameter_law=law, diameter_law_across_pore=law_across,
                   f_a_from={source: sum(p[3] == source for ps in points for p in ps)
                             for source in ("deposit", "all particles", "none")},
                   **beside_results(beside))
