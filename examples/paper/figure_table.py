@@ -26,7 +26,8 @@ DOC = os.path.join(REPO, "doc", "paper.md")
 BEGIN, END = "<!-- paper:figures:begin (examples/paper/figure_table.py) -->", "<!-- paper:figures:end -->"
 FIGURES = ("singlejump", "collection", "dropvol", "porelength", "porediameter", "phaseac",
            "phasead", "conc", "pvpflux")
-# Runs a figure takes from another folder besides its study's (analyze.py --with).
+# Runs a figure takes from another folder besides its study's (analyze.py --with), where its
+# results.json does not name them.
 WITH = {"dropvol": ["doc/calibration/paper_run"]}
 # The figures drawn from one run of another study.
 FROM_ONE_RUN = ("singlejump", "collection")
@@ -40,6 +41,13 @@ def _power_of_ten(value):
 
 
 def _finished(folder):
+    """The finished runs of a study folder, or 1 or 0 for one run's folder (its state.txt)."""
+    if os.path.exists(os.path.join(folder, "knobs.json")):
+        state = os.path.join(folder, "state.txt")
+        if not os.path.exists(state):
+            return 0
+        with open(state) as f:
+            return int(f.readline().strip() == "done")
     if not os.path.exists(os.path.join(folder, "summary.txt")):
         return 0
     return study_io.load_summary(folder)["finished"]
@@ -61,7 +69,8 @@ def row(figure, repo=REPO):
         cost = cost or "—"
     else:
         runs = studies.runs_of(figure, "paper")
-        extra = [os.path.join(repo, w) for w in WITH.get(figure, [])]
+        taken = results.get("with") if results and "with" in results else WITH.get(figure, [])
+        extra = [os.path.join(repo, w) for w in taken]
         planned = len(runs) + sum(_finished(w) for w in extra)
         finished = _finished(evidence) + sum(_finished(w) for w in extra)
         steps = {int(k["steps"]) // studies.run_dem_steps_per_fluid_step(k) for _, k in runs}

@@ -42,8 +42,13 @@ def _within(value, centre, half_width):
 
 def _over(r):
     """' (intervals over one run's bursts)' where a law-type figure has a single run, whose
-    bootstrap resamples bursts, not runs (figures/common.py, resampled)."""
-    return " (intervals over one run's bursts)" if r.get("intervals_over") == "bursts" else ""
+    bootstrap resamples bursts, not runs (figures/common.py, resampled); ' (intervals over N
+    runs)' where it has only a few (a bootstrap over 2-4 runs has few distinct draws and is
+    narrow by that alone)."""
+    if r.get("intervals_over") == "bursts":
+        return " (intervals over one run's bursts)"
+    runs = r.get("finished") or 0
+    return f" (intervals over {runs} runs)" if r.get("intervals_over") == "runs" and 1 < runs < 5 else ""
 
 
 def porediameter(r):

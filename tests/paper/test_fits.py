@@ -776,6 +776,36 @@ class AnalysisWithOtherRuns(unittest.TestCase):
             with self.assertRaises(SystemExit):
                 analyze.keep_runs_matching(summary, "^no_such_run$")
 
+    def test_one_run_of_another_study_at_the_same_scene(self):
+        """--with <one run's folder>: a run of another study whose knobs differ from this
+        study's plan only in its seed and in what it writes is taken (porediameter's run at the
+        default pore as a dropvol seed); a run of another scene is refused, naming the knobs."""
+        import analyze
+        import studies
+        _, plan = studies.dropvol("paper")[0]
+        with tempfile.TemporaryDirectory() as tmp:
+            same = os.path.join(tmp, "porediameter", "runs", "D_3.52_seed_7")
+            other = os.path.join(tmp, "porediameter", "runs", "D_2.82_seed_7")
+            for folder, knobs in ((same, dict(plan, seed=7, restart_every=400000)),
+                                  (other, dict(plan, seed=7, D="2.816901408"))):
+                os.makedirs(folder)
+                with open(os.path.join(folder, "knobs.json"), "w") as f:
+                    json.dump({k: str(v) for k, v in knobs.items()}, f)
+                with open(os.path.join(folder, "state.txt"), "w") as f:
+                    f.write("done\n\n")
+                with open(os.path.join(folder, "cost.txt"), "w") as f:
+                    f.write("7200.0 1\n")
+            summary = dict(study="dropvol", size="paper", runs=[], core_hours=0.0, core_hours_exact=True,
+                           finished=0)
+            analyze.add_runs_of(summary, same)
+            self.assertEqual([r["name"] for r in summary["runs"]], ["porediameter/D_3.52_seed_7"])
+            self.assertEqual((summary["finished"], summary["core_hours"]), (1, 2.0))
+            with self.assertRaises(SystemExit) as refused:
+                analyze.add_runs_of(summary, other)
+            self.assertIn("D 2.816901408 against 3.521126761", str(refused.exception))
+            import figure_table
+            self.assertEqual(figure_table._finished(same), 1)
+
 
 class CommittedRuns(unittest.TestCase):
     """A study continues from what the repository keeps (committed_runs.py): a run cut short
@@ -898,6 +928,9 @@ class FigureTable(unittest.TestCase):
         self.assertEqual(judged, "provisional (1 of 8 runs): no numbers: too few runs for the figure")
         drop = dict(excess_through_origin=[1.3, 1.1, 1.5], pearson=[0.95, 0.9, 0.99])
         self.assertEqual(verdicts.verdict("dropvol", drop, 5, 5)[1], "misses: Pearson 0.95 outside 0.5-0.9")
+        few = dict(drop, intervals_over="runs", finished=2)  # a bootstrap over 2 runs says so
+        self.assertIn("(intervals over 2 runs)", verdicts.verdict("dropvol", few, 2, 6)[0])
+        self.assertNotIn("intervals over", verdicts.verdict("dropvol", dict(few, finished=5), 5, 6)[0])
         self.assertEqual(verdicts.verdict("conc", dict(onset=0.02), 6, 6)[1], "meets")
         self.assertEqual(verdicts.verdict("pvpflux", dict(threshold=0.5), 6, 6)[1],
                          "misses: threshold 0.5 outside 0.35 +- 0.1")
