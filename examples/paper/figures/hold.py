@@ -149,12 +149,18 @@ def analyze(summary, out_dir):
         if groups:
             texts.append(f"{label} {fmt(*value)}")
     fig, axes = plt.subplots(1, 3, figsize=(13, 3.8))
+    others_shown, first = False, next(iter(runs), None)
     for name, run in zip(runs, finished_runs(summary)):
         a = np.asarray(burst_forces(run), float).reshape(-1, 4)
         d = np.asarray(deposit_forces(run), float).reshape(-1, OWN)
         axes[0].plot(a[:, 0], a[:, 1], "o", ms=3, alpha=0.7, label=name)
         axes[1].plot(a[:, 2], a[:, 1], "o", ms=3, alpha=0.7)
-        axes[2].plot(d[:, 0], d[:, 1], "o", ms=3, alpha=0.7)
+        axes[2].plot(d[:, 0], d[:, 1], "o", ms=3, alpha=0.7, label=None if name != first else "the wall's (f_pore[35])")
+        others = d[:, 2] - d[:, 1] - d[:, 5]  # fluid - wall - net: what other particles hold
+        if np.isfinite(others).any():
+            axes[2].plot(d[:, 0], others, "^", mfc="none", ms=4, alpha=0.7, color="grey",
+                         label=None if others_shown else "other particles' (f_pore[36])")
+            others_shown = True
     for ax, xlabel in zip(axes, ("load P pi D^2 / 4 at the peak", "fluid's force on the particles",
                                  "load at the deposit's largest count")):
         top = max([abs(v) for line in ax.get_lines() for v in line.get_xdata() if np.isfinite(v)] + [1e-30])
@@ -164,8 +170,10 @@ def analyze(summary, out_dir):
     axes[0].legend(fontsize=6)
     axes[0].set_title("the wall's hold against the paper's load", fontsize=9)
     axes[1].set_title("the wall's hold against the fluid's force", fontsize=9)
-    axes[2].set_ylabel("the wall's hold on the deposit alone [N]")
-    axes[2].set_title("the deposit's own hold (rows with f_pore[35] only)", fontsize=9)
+    axes[2].set_ylabel("hold on the deposit alone [N]")
+    axes[2].set_title("the deposit's own hold (rows with f_pore[35])", fontsize=9)
+    if any(not label.startswith("all of it") for label in axes[2].get_legend_handles_labels()[1]):
+        axes[2].legend(fontsize=6)
     if not any(np.isfinite(line.get_ydata()).any() for line in axes[2].get_lines()[:-1]):
         axes[2].text(0.5, 0.5, "not recorded in these runs", transform=axes[2].transAxes, ha="center")
     bands = share_by_peak(summary)
