@@ -26,9 +26,9 @@ DOC = os.path.join(REPO, "doc", "paper.md")
 BEGIN, END = "<!-- paper:figures:begin (examples/paper/figure_table.py) -->", "<!-- paper:figures:end -->"
 FIGURES = ("singlejump", "collection", "dropvol", "porelength", "porediameter", "phaseac",
            "phasead", "conc", "pvpflux")
-# Runs a figure takes from another folder besides its study's (analyze.py --with), where its
-# results.json does not name them.
-WITH = {"dropvol": ["doc/calibration/paper_run"]}
+# The runs a figure plans to take from other studies' folders beside its own (analyze.py
+# --with), each one run: counted in its plan whether finished or not.
+WITH = {"dropvol": studies.DROPVOL_BESIDE}
 # The figures drawn from one run of another study.
 FROM_ONE_RUN = ("singlejump", "collection")
 
@@ -69,10 +69,10 @@ def row(figure, repo=REPO):
         cost = cost or "—"
     else:
         runs = studies.runs_of(figure, "paper")
-        taken = results.get("with") if results and "with" in results else WITH.get(figure, [])
-        extra = [os.path.join(repo, w) for w in taken]
-        planned = len(runs) + sum(_finished(w) for w in extra)
-        finished = _finished(evidence) + sum(_finished(w) for w in extra)
+        beside = list(WITH.get(figure, ()))
+        taken = results["with"] if results and "with" in results else beside
+        planned = len(runs) + sum(max(1, _finished(os.path.join(repo, w))) for w in set(beside) | set(taken))
+        finished = _finished(evidence) + sum(_finished(os.path.join(repo, w)) for w in taken)
         steps = {int(k["steps"]) // studies.run_dem_steps_per_fluid_step(k) for _, k in runs}
         length = " / ".join(_power_of_ten(s) for s in sorted(steps)) + " fluid steps after the warm-up"
         cost = cost or f"est. {studies.core_hours(runs):.0f}"

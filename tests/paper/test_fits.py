@@ -481,7 +481,7 @@ class PaperSizePlan(unittest.TestCase):
     def test_counts_seeds_and_lengths(self):
         import studies
         used = {100003, 101009, 200003, 201007, 202021, 300007, 300017}
-        counts = dict(porediameter=8, porelength=6, dropvol=4, phaseac=9, phasead=6, conc=6, pvpflux=6)
+        counts = dict(porediameter=8, porelength=6, dropvol=2, phaseac=9, phasead=6, conc=6, pvpflux=6)
         for study, count in counts.items():
             runs = studies.runs_of(study, "paper")
             self.assertEqual(len(runs), count, study)
@@ -493,6 +493,24 @@ class PaperSizePlan(unittest.TestCase):
         diameters = sorted({float(k["D"]) for _, k in studies.runs_of("porediameter", "paper")})
         self.assertEqual([round(d, 2) for d in diameters], [2.11, 2.82, 3.52, 4.23])
         self.assertEqual(len({k["seed"] for _, k in studies.runs_of("porediameter", "paper")}), 2)
+
+    def test_dropvol_has_five_seeds_of_its_scene(self):
+        """dropvol's new seeds and the runs of other studies it takes beside them
+        (studies.DROPVOL_BESIDE) are the default pore's scene, on 5 different seeds."""
+        import analyze
+        import studies
+        import study_io
+        seeds = {int(k["seed"]) for _, k in studies.runs_of("dropvol", "paper")}
+        porediameter = dict(studies.runs_of("porediameter", "paper"))
+        for path in studies.DROPVOL_BESIDE:
+            name = os.path.basename(path)
+            if path.startswith("doc/paper/porediameter/runs/"):
+                knobs = porediameter[name]  # planned there, finished or not
+            else:
+                knobs = study_io.read_knobs(os.path.join(REPO, path, "runs", os.listdir(os.path.join(REPO, path, "runs"))[0]))
+            self.assertEqual(analyze.scene_differences(knobs, "dropvol", "paper"), {}, path)
+            seeds.add(int(knobs["seed"]))
+        self.assertEqual(len(seeds), 5)
 
 
 class RunLength(unittest.TestCase):
