@@ -595,6 +595,13 @@ class DepositHold(unittest.TestCase):
                 f.write("\n".join(log) + "\n")
             summary = dict(runs=[run], finished=1, study="hold", size="tiny", core_hours=0.0)
             r = hold.analyze(summary, tmp)["ratios"]
+            # with each DEM step applying 1 / N_DEM of the fluid step's force, fluid - wall -
+            # net is not the other particles' hold: no others, no net; the rest as it was
+            fraction = dict(run, knobs=dict(run["knobs"], substep_force="fraction"))
+            f = hold.run_ratios(fraction)
+        self.assertTrue(np.isnan(f["deposit_others_over_load"]).all())
+        self.assertTrue(np.isnan(f["deposit_net_over_load"]).all())
+        self.assertAlmostEqual(float(np.nanmedian(f["deposit_wall_over_fluid"])), 0.75, places=12)
         # the bursts' peaks 0.2 and 0.4 P_out with load 2.0: at P 0.05 the loads are 0.5, 0.25
         self.assertAlmostEqual(r["deposit_wall_over_load"]["median"], np.median([0.6 / 0.5, 0.6 / 0.25]), places=12)
         self.assertAlmostEqual(r["deposit_fluid_over_load"]["median"], np.median([0.8 / 0.5, 0.8 / 0.25]), places=12)

@@ -26,7 +26,11 @@ figures' measure, figures.common.largest_deposit_row):
   acceleration), and the other particles' hold, what the fluid's push leaves after the wall's
   hold and the net force: fluid - wall - net (f_pore[34] + f_pore[35] - f_pore[36]), the
   contacts and cohesion of particles outside the deposit across its edge (those within it
-  cancel). fluid = wall + others + net closes the deposit's balance.
+  cancel). fluid = wall + others + net closes the deposit's balance. f_pore[34] is the fluid
+  step's force; the DEM step applies it less the implicit term C (v - v_step) and plus the
+  lubrication forces, both proportional to speeds a deposit (slower than deposit_speed) does
+  not have. Under `substep_force fraction` the DEM applies only 1 / N_DEM of it, so a run
+  with that knob gets no others and no net (NaN).
 
 wall / fluid near 1 says the particles are at rest on the wall (no other body holds them);
 fluid / load below 1 says the fluid puts the rest of the load on the pore's solid walls
@@ -64,6 +68,7 @@ def deposit_forces(run):
     columns."""
     columns = thermo(run["folder"])
     window = burst_window_dem_steps(run["folder"], run["knobs"])
+    balanced = run["knobs"].get("substep_force", "held") != "fraction"  # the module's docstring
     value = lambda name, k: float(columns[name][k]) if name in columns else np.nan  # noqa: E731
     out = []
     for b in bursts(run["folder"]):
@@ -73,7 +78,7 @@ def deposit_forces(run):
             continue
         load = b["P_pi_D2_4"] * value("pore[16]", k) / b["P_peak"]
         out.append((load, -value("pore[35]", k), value("pore[34]", k), value("pore[7]", k), value("pore[26]", k),
-                    value("pore[36]", k)))
+                    value("pore[36]", k) if balanced else np.nan))
     return out
 
 
