@@ -480,7 +480,7 @@ class PaperSizePlan(unittest.TestCase):
 
     def test_counts_seeds_and_lengths(self):
         import studies
-        used = {100003, 101009, 200003, 201007, 202021, 300007, 300017}
+        used = {100003, 101009, 200003, 201007, 202021, 203011, 204007, 300007, 300017}
         counts = dict(porediameter=8, porelength=6, dropvol=2, phaseac=9, phasead=6, conc=6, pvpflux=6)
         for study, count in counts.items():
             runs = studies.runs_of(study, "paper")
