@@ -328,8 +328,9 @@ def settings(size):
     0.0025, the reference pressure kept): N_DEM = 100 DEM substeps per fluid step (the
     paper's) against 20, on five seeds the examples do not use, 2 x 10^5 fluid steps each at
     the paper size (three first; three seeds' spread proved narrower than one seed's own
-    variation, doc/paper.md). If the largest deposits, the highest pressure peaks and the burst counts
-    agree within the seeds' spread, the studies may use the cheaper (figures/settings.py)."""
+    variation, doc/paper.md). If the largest deposits, the highest pressure peaks and the
+    burst counts agree within the seeds' spread, the studies may use the cheaper
+    (figures/settings.py)."""
     lengths = {"tiny": {}, "quick": dict(steps=2000000),
                "paper": dict(steps=20000000 - 200000)}[size]
     runs = []

@@ -506,8 +506,9 @@ class PaperSizePlan(unittest.TestCase):
             name = os.path.basename(path)
             if path.startswith("doc/paper/porediameter/runs/"):
                 knobs = porediameter[name]  # planned there, finished or not
-            else:
-                knobs = study_io.read_knobs(os.path.join(REPO, path, "runs", os.listdir(os.path.join(REPO, path, "runs"))[0]))
+            else:  # a study folder of one run
+                runs = os.path.join(REPO, path, "runs")
+                knobs = study_io.read_knobs(os.path.join(runs, os.listdir(runs)[0]))
             self.assertEqual(analyze.scene_differences(knobs, "dropvol", "paper"), {}, path)
             seeds.add(int(knobs["seed"]))
         self.assertEqual(len(seeds), 5)
