@@ -323,8 +323,13 @@ class CompactedEvidence(unittest.TestCase):
             # steps before the peak to half of that after).
             original, compacted = common.thermo(run["folder"]), common.thermo(kept["folder"])
             index = [original["Step"].index(step) for step in compacted["Step"]]
+            # whole numbers (steps, counts) exactly, the rest to compact_study.KEPT_DIGITS
             for name, values in compacted.items():
-                np.testing.assert_allclose(values, np.asarray(original[name])[index], rtol=1e-7)
+                np.testing.assert_allclose(values, np.asarray(original[name])[index],
+                                           rtol=0.5 * 10.0 ** (1 - compact_study.KEPT_DIGITS))
+            self.assertEqual(compacted["Step"], [original["Step"][i] for i in index])
+            self.assertEqual(compact_study.kept_value(100200000.0), "100200000")
+            self.assertEqual(compact_study.kept_value(0.123456789), "0.123457")
             in_windows = [step for step in original["Step"] if any(-1e5 <= step - p <= 5e4 for p in
                                                                    (300000, 700000, 1100000, 1500000))]
             self.assertTrue(set(in_windows) <= set(compacted["Step"]))
