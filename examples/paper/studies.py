@@ -59,6 +59,15 @@ SIZES = {
 # fluid steps, as bench_paper_run measured then (its current figure: doc/performance.md).
 CORE_SECONDS_PER_CELL_STEP = 1.8e-7
 N_DEM = 100  # DEM steps per fluid step at the paper's resolution (in.pore's n_dem)
+# The share of that cost the DEM substeps take at N_DEM: the settings study's runs at the
+# paper size cost a median 0.66 as much at N_DEM 20 as at 100 (0.73 against 1.10 core-hours
+# per 2 x 10^5 fluid steps), so the cost is 0.57 + 0.43 n_dem / N_DEM of N_DEM's.
+DEM_COST_SHARE = 0.43
+# The DEM substeps per fluid step of the studies at the paper size, by the settings study's
+# rule (doc/paper.md, "The studies' settings"): over five seeds N_DEM 20's burst counts,
+# deposits and P_max lay within N_DEM 100's spread. porediameter and the runs dropvol takes
+# beside its own were made at N_DEM 100 before the verdict and keep it: a fit mixes no N_DEM.
+STUDY_N_DEM = 20
 PAPER_CELLS_PER_D = 7.1
 
 
@@ -98,7 +107,8 @@ def core_hours(runs, ranks_per_run=1):
     for _, knobs in runs:
         n_dem = run_dem_steps_per_fluid_step(knobs)
         fluid_steps = (int(knobs["steps"]) + int(knobs["warmup"])) / n_dem
-        total += fluid_steps * lattice_cells(knobs) * CORE_SECONDS_PER_CELL_STEP
+        dem_factor = 1.0 - DEM_COST_SHARE + DEM_COST_SHARE * float(knobs.get("n_dem", N_DEM)) / N_DEM
+        total += fluid_steps * lattice_cells(knobs) * CORE_SECONDS_PER_CELL_STEP * dem_factor
     return total / 3600.0
 
 
@@ -175,6 +185,12 @@ def dropvol(size):
     return [(f"seed_{s}", _base(size, seed=s)) for s in _study_seeds(size, "dropvol", 2, 6, 2)]
 
 
+def _at_study_n_dem(size, knobs):
+    """A run of a study begun after the settings verdict: at the paper size STUDY_N_DEM DEM
+    substeps per fluid step, the same physical run."""
+    return with_n_dem(knobs, STUDY_N_DEM) if size == "paper" else knobs
+
+
 def porelength(size):
     # paper: every other of the paper's lengths from 0.70 d (0.70, 2.11, ... 7.75), one seed
     lengths = _counts(size, PORE_LENGTHS[5:7], PORE_LENGTHS[1::2], PORE_LENGTHS[1::2])
@@ -183,7 +199,7 @@ def porelength(size):
     for L in lengths:
         knobs = _base(size, seed=seed)
         knobs.update(scene(knobs["cells_per_d"], Lp=L))
-        runs.append((f"L_{L:.2f}", knobs))
+        runs.append((f"L_{L:.2f}", _at_study_n_dem(size, knobs)))
     return runs
 
 
@@ -204,11 +220,11 @@ def porediameter(size):
 
 
 def _phase_base(size, **knobs):
-    """A run of a phase diagram or of conc: at the paper size PHASE_DIAGRAM_STEPS long, on the
-    phase block's seed."""
+    """A run of a phase diagram or of conc: at the paper size PHASE_DIAGRAM_STEPS long (in DEM
+    steps at N_DEM) and at STUDY_N_DEM, on the phase block's seed."""
     seed, = _study_seeds(size, "phase", 1, 1, 1)
     extra = dict(steps=PHASE_DIAGRAM_STEPS) if size == "paper" else {}
-    return _base(size, seed=seed, **extra, **knobs)
+    return _at_study_n_dem(size, _base(size, seed=seed, **extra, **knobs))
 
 
 def phaseac(size):

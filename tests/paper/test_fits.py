@@ -499,6 +499,32 @@ class PaperSizePlan(unittest.TestCase):
         self.assertEqual([round(d, 2) for d in diameters], [2.11, 2.82, 3.52, 4.23])
         self.assertEqual(len({k["seed"] for _, k in studies.runs_of("porediameter", "paper")}), 2)
 
+    def test_n_dem_by_the_settings_verdict(self):
+        """The studies begun after the settings verdict run at STUDY_N_DEM; porediameter and
+        dropvol, whose fits take runs made before it, at N_DEM; the same physical run either
+        way (the thermo rows as many fluid steps apart)."""
+        import studies
+        for study in ("porelength", "phaseac", "phasead", "conc", "pvpflux"):
+            for name, knobs in studies.runs_of(study, "paper"):
+                self.assertEqual(int(knobs["n_dem"]), studies.STUDY_N_DEM, f"{study} {name}")
+                per_fluid_step = studies.run_dem_steps_per_fluid_step(knobs)
+                self.assertEqual(int(knobs["thermo_every"]) / per_fluid_step, 10)
+                self.assertEqual(int(knobs["warmup"]) / per_fluid_step, 2000)
+        for study in ("porediameter", "dropvol"):
+            for name, knobs in studies.runs_of(study, "paper"):
+                self.assertEqual(int(knobs.get("n_dem", studies.N_DEM)), studies.N_DEM, f"{study} {name}")
+        for study in ("porelength", "conc"):  # the quick size keeps the table's N_DEM
+            for name, knobs in studies.runs_of(study, "quick"):
+                self.assertNotIn("n_dem", knobs)
+
+    def test_cost_estimate_counts_the_dem_share(self):
+        """A run at N_DEM 20 is estimated at 1 - 0.8 DEM_COST_SHARE of the same run at 100."""
+        import studies
+        name, knobs = studies.runs_of("dropvol", "paper")[0]
+        at_100 = studies.core_hours([(name, knobs)])
+        at_20 = studies.core_hours([(name, studies.with_n_dem(knobs, 20))])
+        self.assertAlmostEqual(at_20 / at_100, 1.0 - 0.8 * studies.DEM_COST_SHARE)
+
     def test_dropvol_has_five_seeds_of_its_scene(self):
         """dropvol's new seeds and the runs of other studies it takes beside them
         (studies.DROPVOL_BESIDE) are the default pore's scene, on 5 different seeds."""
