@@ -8,10 +8,11 @@ diameters d) that differ in a seed or a swept knob, in three sizes:
          fewer seeds and points, 2-4 % of the paper's run length. in.pore coarsens by
          acoustic scaling (its header): the fluid step grows to 1.42, tau to 0.852, so the
          viscosity, the inlet speed, P_out and the DEM step stay the paper's
-  paper  the paper's resolution (7.1 cells per d) and run length (10^6 fluid steps, 10^8 DEM
-         steps), in the regime the calibration chose (PAPER_REGIME), on seeds the examples do
-         not use (STUDY_SEEDS); the phase diagrams and conc as long, by
-         their length rule (PHASE_DIAGRAM_STEPS). The counts are what two cores can afford, at least those
+  paper  the paper's resolution (7.1 cells per d) and run length (10^6 fluid steps), in the
+         regime the calibration chose (PAPER_REGIME), on seeds the examples do not use
+         (STUDY_SEEDS); the phase diagrams and conc as long, by their length rule
+         (PHASE_DIAGRAM_STEPS); N_DEM 100 DEM steps per fluid step for porediameter and
+         dropvol, STUDY_N_DEM for the studies begun after the settings study's verdict. The counts are what two cores can afford, at least those
          doc/paper.md's criteria need, not the paper's (80 runs for porediameter alone, some
          950 core-hours)
 
