@@ -12,9 +12,9 @@ diameters d) that differ in a seed or a swept knob, in three sizes:
          regime the calibration chose (PAPER_REGIME), on seeds the examples do not use
          (STUDY_SEEDS); the phase diagrams and conc as long, by their length rule
          (PHASE_DIAGRAM_STEPS); N_DEM 100 DEM steps per fluid step for porediameter and
-         dropvol, STUDY_N_DEM for the studies begun after the settings study's verdict. The counts are what two cores can afford, at least those
-         doc/paper.md's criteria need, not the paper's (80 runs for porediameter alone, some
-         950 core-hours)
+         dropvol, STUDY_N_DEM for the studies begun after the settings study's verdict.
+         The counts are what two cores can afford, at least those doc/paper.md's criteria
+         need, not the paper's (80 runs for porediameter alone, some 950 core-hours)
 
 A run is (name, knobs): the knobs are in.pore's -var names with their values. Lengths go
 through `scene`, which rounds them to whole cells of 1 / cells_per_d, as fix lbm/pore needs.
