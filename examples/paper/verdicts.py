@@ -55,7 +55,10 @@ def porediameter(r):
     law = r.get("diameter_law", {})
     K, a = law.get("K"), law.get("a")
     k, e = _value(K), _value(a)
-    ours = f"K {_fmt(K)}, exponent of D {_fmt(a)} (intervals over seeds)"
+    per_D = law.get("runs_per_D", [])
+    seeded = sum(n >= 2 for n in per_D)
+    ours = (f"K {_fmt(K)}, exponent of D {_fmt(a)} (intervals over seeds"
+            + (f"; two or more at {seeded} of {len(per_D)} diameters)" if seeded < len(per_D) else ")"))
     across = r.get("diameter_law_across_pore", {})
     if math.isfinite(_value(across.get("K"))):
         ours += f"; P across the pore, beside: K {_fmt(across['K'])}, exponent {_fmt(across['a'])}"

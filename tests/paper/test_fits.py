@@ -998,6 +998,12 @@ class FigureTable(unittest.TestCase):
         law = dict(diameter_law=dict(K=[1.2, 1.0, 1.4], a=[0.9, 0.7, 1.1]))
         self.assertEqual(verdicts.verdict("porediameter", law, 8, 8)[1],
                          "misses: K 1.2 outside 0.91 +- 0.1")
+        # the intervals over seeds say at how many diameters there are seeds to resample
+        partly = dict(diameter_law=dict(law["diameter_law"], runs_per_D=[2, 1, 1, 1]))
+        self.assertIn("(intervals over seeds; two or more at 1 of 4 diameters)",
+                      verdicts.verdict("porediameter", partly, 5, 8)[0])
+        every = dict(diameter_law=dict(law["diameter_law"], runs_per_D=[2, 2, 2, 2]))
+        self.assertIn("(intervals over seeds)", verdicts.verdict("porediameter", every, 8, 8)[0])
         one_d = dict(diameter_law=dict(K=[None] * 3, a=[None] * 3), K_excess=[0.7, 0.6, 0.8], finished=1)
         ours, judged = verdicts.verdict("porediameter", one_d, 1, 8)
         self.assertIn("over the bursts", ours)
