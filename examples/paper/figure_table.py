@@ -77,8 +77,6 @@ def row(figure, repo=REPO):
         length = " / ".join(_power_of_ten(s) for s in sorted(steps)) + " fluid steps after the warm-up"
         cost = cost or f"est. {studies.core_hours(runs):.0f}"
     ours, verdict = verdicts.verdict(figure, results, finished, planned)
-    if finished == 0 and (figure, "paper") in studies.NOT_RUNNABLE:
-        verdict = "not run: waits on a drive that fills the pore first (above)"
     plot = ""
     if results and results.get("plot"):
         plot = f"![{figure}](paper/{figure}/{os.path.basename(results['plot'])})"

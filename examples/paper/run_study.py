@@ -189,9 +189,6 @@ def main():
                                        for k, v in sorted(knobs.items())))
     if args.dry_run:
         return 0
-    if (args.study, args.size) in studies.NOT_RUNNABLE:
-        sys.exit(f"study {args.study} at size {args.size} is not run: "
-                 f"{studies.NOT_RUNNABLE[(args.study, args.size)]}")
     if not os.path.exists(args.driver):
         sys.exit(f"no liggghts-lbm at {args.driver} (build first, or pass --driver)")
     if args.fresh:

@@ -264,20 +264,15 @@ def conc(size):
 
 
 # Studies a size cannot run yet, with the reason run_study.py gives when asked to launch them.
-# pvpflux at the paper size: an imposed 0.1-0.5 P_out through the empty pore drives the flow
-# 25-125 times faster than in.pore's inlet velocity (0.35 P_out goes unstable within 200 fluid
-# steps); its runs wait on a drive that fills the pore at the inlet velocity first.
-NOT_RUNNABLE = {("pvpflux", "paper"): "an imposed 0.1-0.5 P_out through the empty pore is past the "
-                "lattice's speed limit at the paper size (0.35 P_out goes unstable within 200 fluid "
-                "steps); it waits on a drive that fills the pore at in.pore's inlet velocity first "
-                "(doc/paper.md, \"pvpflux waits on a drive\")"}
-
-
 def pvpflux(size):
-    pressures = _counts(size, [0.1, 0.4], [0.1, 0.2, 0.3, 0.4, 0.5],
+    """The imposed pressure loss as a ceiling on in.pore's inlet velocity (P_max: the pore fills
+    at u_in, the loss is then held at P_max): the loss alone through the empty pore, 0.004 P_out
+    at u_in at the paper size, would drive it 25-125 times faster, past the lattice's limit
+    (doc/paper.md, "pvpflux"). f_pore[37] is the inlet velocity the ceiling leaves."""
+    pressures = _counts(size, [0.1, 0.4], [0.1, 0.2, 0.3, 0.35, 0.4, 0.5],
                         [0.1, 0.2, 0.3, 0.35, 0.4, 0.5])
-    return [(f"P_{p:g}", _phase_base(size, ka=0.05, P_imposed=p,
-                               thermo_extra="f_pore[3] f_pore[13]")) for p in pressures]
+    return [(f"P_{p:g}", _phase_base(size, ka=0.05, P_max=p,
+                               thermo_extra="f_pore[3] f_pore[13] f_pore[37]")) for p in pressures]
 
 
 def with_n_dem(knobs, n_dem):

@@ -24,6 +24,7 @@
 #include "lbm_pore_options.h"
 
 namespace lbm {
+class CappedVelocityDrive;
 class FluidSolver;
 class VoxelGeometry;
 class VtkSeriesWriter;
@@ -46,6 +47,9 @@ class FixLbmPore : public Fix {
   void post_integrate() override;
   void post_force(int vflag) override;
   void end_of_step() override;
+  // f_ID[1..kCount]: the pore monitor's values (coupling::PoreMonitor::Quantity); f_ID[kCount+1]
+  // (kInletVelocityIndex): the inlet velocity of the drive (velocity units).
+  static constexpr int kInletVelocityIndex = coupling::PoreMonitor::kCount;
   double compute_vector(int index) override;
   double compute_array(int row, int column) override;
   void post_run() override;
@@ -93,6 +97,7 @@ class FixLbmPore : public Fix {
   void record_particles();
   void start_monitor();
   bool at_fluid_step() const;
+  double inlet_velocity() const;
   void record_fluid_step();
   void check_fluid_state();
   void check_particle_speed();
@@ -105,12 +110,14 @@ class FixLbmPore : public Fix {
   std::shared_ptr<const lbm::VoxelGeometry> geometry_;
   std::unique_ptr<contact::VoxelSurface> surface_;  // wall distances for lubrication, bonds
   std::unique_ptr<lbm::FluidSolver> solver_;
+  std::unique_ptr<lbm::CappedVelocityDrive> capped_drive_;  // 'max_pressure_loss'; null without
   std::unique_ptr<coupling::SphereCoupling> coupling_;
   std::unique_ptr<coupling::SubstepLoadModel> load_model_;
   std::unique_ptr<coupling::LubricationKernel> lubrication_;
   coupling::PoreMonitorSetup monitor_setup_;  // from the geometry, before the lattice exists
   std::unique_ptr<coupling::PoreMonitor> monitor_;
   std::vector<double> restored_state_;        // the monitor's state from a restart file
+  std::vector<double> restored_drive_state_;  // the capped drive's (empty: none kept)
   std::unique_ptr<lbm::VtkSeriesWriter> vtk_;
   lbm_pore::LatticeParticles particles_;
   lbm_pore::AtomStates states_;  // per atom (owned and ghosts)

@@ -10,6 +10,7 @@
 #include "error.h"
 #include "fix_lbm_pore.h"
 #include "liggghts_queries.h"
+#include "lbm/capped_drive.h"
 #include "lbm/fluid_solver.h"
 #include "lbm/input_error.h"
 #include "modify.h"
@@ -103,6 +104,7 @@ double FixLbmPore::compute_array(int row, int column) { return monitor_->burst_v
 // The fluid values it reads include the lattice Mach number: a flow beyond the lattice's
 // accuracy is said once per run.
 double FixLbmPore::compute_vector(int index) {
+  if (index == kInletVelocityIndex) return units_->velocity_to_physical(inlet_velocity());
   const double value = monitor_->value(index, *solver_, fluid_steps_);
   // The Mach number is reduced over the ranks: all of them locate the fast node together.
   const double mach = monitor_->values()[coupling::PoreMonitor::kLatticeMach];
@@ -113,6 +115,14 @@ double FixLbmPore::compute_vector(int index) {
     if (comm->me == 0) error->warning(FLERR, warning.c_str());
   }
   return value;
+}
+
+// The inlet velocity of the drive (lattice units): the capped drive's for the next step, the
+// velocity inlet's, or a density inlet's mean over its face in the last step (collective).
+double FixLbmPore::inlet_velocity() const {
+  if (capped_drive_) return capped_drive_->inlet_velocity();
+  if (solver_->drive().kind == lbm::FlowDrive::kInletVelocity) return solver_->drive().inlet_velocity;
+  return lbm::read_drive_faces(*solver_).inlet_velocity;
 }
 
 // Where the time of the run went, on rank 0.

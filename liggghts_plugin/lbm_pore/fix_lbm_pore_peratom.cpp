@@ -8,6 +8,7 @@
 #include "comm.h"
 #include "error.h"
 #include "fix_lbm_pore.h"
+#include "lbm/capped_drive.h"
 #include "lbm/checkpoint.h"
 #include "lbm/input_error.h"
 #include "memory.h"
@@ -33,7 +34,8 @@ void FixLbmPore::write_restart(FILE* fp) {
     lbm_pore::stop_on_this_rank(error, comm->me, screen, logfile, e.what());
   }
   if (comm->me != 0) return;
-  const std::string record = lbm_pore::RestartRecord{monitor_->state(), path}.bytes();
+  const std::string record = lbm_pore::RestartRecord{
+      monitor_->state(), path, capped_drive_ ? capped_drive_->state() : std::vector<double>()}.bytes();
   const int size = static_cast<int>(record.size());
   std::fwrite(&size, sizeof(int), 1, fp);
   std::fwrite(record.data(), 1, record.size(), fp);
@@ -43,6 +45,7 @@ void FixLbmPore::restart(char* buf) {
   lbm_pore::RestartRecord record = lbm_pore::RestartRecord::read(buf);
   restored_state_ = std::move(record.monitor_state);
   resume_checkpoint_ = std::move(record.checkpoint);
+  restored_drive_state_ = std::move(record.drive_state);
 }
 
 void FixLbmPore::grow_arrays(int nmax) {

@@ -156,6 +156,8 @@ PoreOptions parse_pore_options(const std::vector<std::string>& args) {
       o.drive = PoreOptions::Drive::kPressureLoss;
       o.drive_value = non_negative_drive(words, key);
       drive_given = true;
+    } else if (key == "max_pressure_loss") {
+      o.max_pressure_loss = words.number(key, 0.0, kInf);
     } else if (key == "boundary") {
       o.boundary = words.text(key);
       if (o.boundary != "bounce_back" && o.boundary != "bouzidi" && o.boundary != "mls")
@@ -222,12 +224,15 @@ PoreOptions parse_pore_options(const std::vector<std::string>& args) {
     fail("keyword 'scene' is required: 'scene pore inlet .. free .. length .. outlet .. width .. "
          "diameter ..' or 'scene voxels <file>'");
   if (!drive_given) fail("a drive is required: 'velocity <U>' or 'pressure_loss <P>'");
+  if (o.max_pressure_loss > 0.0 && (o.drive != PoreOptions::Drive::kVelocity || o.drive_value <= 0.0))
+    fail("keyword 'max_pressure_loss' caps the pressure loss of a velocity inlet: it needs 'velocity <U>' "
+         "with U > 0, not 'pressure_loss' or a closed box");
   return o;
 }
 
 const char* pore_options_usage() {
   return "dx, rho, nu, n_dem, magic, scene (pore|voxels), origin, lateral, velocity, "
-         "pressure_loss, boundary, mass_correction, moving_walls, reference_pressure, substep_force, rotation, lubrication, lubrication_cutoff, deposit_region, deposit_speed, burst_drop, "
+         "pressure_loss, max_pressure_loss, boundary, mass_correction, moving_walls, reference_pressure, substep_force, rotation, lubrication, lubrication_cutoff, deposit_region, deposit_speed, burst_drop, "
          "burst_window, burst_deposits, burst_file, deposit_speeds, vtk, "
          "checkpoint, checkpoint_keep";
 }

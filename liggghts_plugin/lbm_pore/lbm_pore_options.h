@@ -26,6 +26,10 @@ struct PoreOptions {
   // Drive (along +x).
   enum class Drive { kVelocity, kPressureLoss } drive = Drive::kVelocity;
   double drive_value = 0.0;
+  // > 0 with the velocity drive: the inlet velocity is lowered where the pressure loss would
+  // pass this (lbm::CappedVelocityDrive), the paper's imposed pressure on a pore that fills
+  // at the inlet velocity first.
+  double max_pressure_loss = 0.0;
   // Particle coupling.
   std::string boundary = "mls";  // bounce_back | bouzidi | mls
   // Put back the mass the interpolated links (bouzidi, mls) create at each node every step

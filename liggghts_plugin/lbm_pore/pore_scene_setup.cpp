@@ -160,6 +160,22 @@ lbm::FlowDrive drive_of(const PoreOptions& o, const coupling::UnitConversion& un
   throw lbm::InputError(text);
 }
 
+std::unique_ptr<lbm::CappedVelocityDrive> capped_drive_of(const PoreOptions& o, const coupling::UnitConversion& units,
+                                                          const lbm::FluidSolver& solver) {
+  if (!(o.max_pressure_loss > 0.0)) return nullptr;
+  lbm::FlowDrive pressure = solver.drive();
+  pressure.kind = lbm::FlowDrive::kPressureLoss;
+  pressure.pressure_loss = units.pressure_to_lattice(o.max_pressure_loss);
+  const std::string violation = lbm::drive_limit_violation(pressure);
+  if (!violation.empty()) {
+    char text[500];
+    std::snprintf(text, sizeof text, "max_pressure_loss: %g is %s; lower 'max_pressure_loss' or n_dem, or refine dx",
+                  o.max_pressure_loss, violation.c_str());
+    throw lbm::InputError(text);
+  }
+  return std::make_unique<lbm::CappedVelocityDrive>(solver, solver.drive(), pressure.pressure_loss);
+}
+
 void check_boundaries(const PoreOptions& o, const int* periodicity) {
   for (int a = 1; a < 3; ++a)
     if (o.lateral_periodic != (periodicity[a] != 0))

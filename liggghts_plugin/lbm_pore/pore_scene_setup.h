@@ -12,6 +12,7 @@
 #include "coupling/sphere_coupling.h"
 #include "coupling/unit_conversion.h"
 #include "lbm/block_layout.h"
+#include "lbm/capped_drive.h"
 #include "lbm/communicator.h"
 #include "lbm/fluid_solver.h"
 #include "lbm/voxel_geometry.h"
@@ -44,6 +45,13 @@ void check_lattice_memory(const PoreOptions& options, const lbm::Box& owned,
 // The drive along +x in lattice units; throws lbm::InputError naming 'velocity' or
 // 'pressure_loss' when it exceeds the scheme's limits (lbm/stability.h).
 lbm::FlowDrive drive_of(const PoreOptions& options, const coupling::UnitConversion& units);
+
+// The ceiling on the velocity inlet's pressure loss ('max_pressure_loss'), on the solver's
+// drive; null without the keyword. Throws lbm::InputError naming 'max_pressure_loss' when the
+// loss exceeds a pressure drive's limit (lbm/stability.h).
+std::unique_ptr<lbm::CappedVelocityDrive> capped_drive_of(const PoreOptions& options,
+                                                          const coupling::UnitConversion& units,
+                                                          const lbm::FluidSolver& solver);
 
 // The fluid's lateral boundaries and LIGGGHTS's periodicity (domain->periodicity) must agree,
 // and the flow axis x must not be periodic. Throws lbm::InputError saying what to change.

@@ -4,21 +4,39 @@
 
 namespace lbm_pore {
 
+namespace {
+void append_values(std::string& out, const std::vector<double>& values) {
+  const double count = double(values.size());
+  out.append(reinterpret_cast<const char*>(&count), sizeof(double));
+  out.append(reinterpret_cast<const char*>(values.data()), sizeof(double) * values.size());
+}
+
+// Reads a count and as many values at `at`; returns the position after them.
+const char* read_values(const char* at, std::vector<double>& values) {
+  double count = 0.0;
+  std::memcpy(&count, at, sizeof(double));
+  values.resize(static_cast<std::size_t>(count));
+  std::memcpy(values.data(), at + sizeof(double), sizeof(double) * values.size());
+  return at + sizeof(double) * (values.size() + 1);
+}
+}  // namespace
+
 std::string RestartRecord::bytes() const {
-  const double count = double(monitor_state.size());
-  std::string out(reinterpret_cast<const char*>(&count), sizeof(double));
-  out.append(reinterpret_cast<const char*>(monitor_state.data()), sizeof(double) * monitor_state.size());
+  std::string out(reinterpret_cast<const char*>(&kTagWithDrive), sizeof(double));
+  append_values(out, monitor_state);
+  append_values(out, drive_state);
   out.append(checkpoint.c_str(), checkpoint.size() + 1);
   return out;
 }
 
 RestartRecord RestartRecord::read(const char* bytes) {
   RestartRecord record;
-  double count = 0.0;
-  std::memcpy(&count, bytes, sizeof(double));
-  record.monitor_state.resize(static_cast<std::size_t>(count));
-  std::memcpy(record.monitor_state.data(), bytes + sizeof(double), sizeof(double) * record.monitor_state.size());
-  record.checkpoint = std::string(bytes + sizeof(double) * (record.monitor_state.size() + 1));
+  double first = 0.0;
+  std::memcpy(&first, bytes, sizeof(double));
+  const bool with_drive = first == kTagWithDrive;
+  const char* at = read_values(with_drive ? bytes + sizeof(double) : bytes, record.monitor_state);
+  if (with_drive) at = read_values(at, record.drive_state);
+  record.checkpoint = std::string(at);
   return record;
 }
 

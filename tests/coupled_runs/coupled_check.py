@@ -4,7 +4,7 @@ compares what it measures with a physical expectation or a reference run. Prints
 with its bound (tests/harness/liggghts_run.py); exits 1 when one fails.
 
 usage: coupled_check.py --driver liggghts-lbm --scripts DIR [--mpirun mpirun] CASE
-CASE: adhesion | clog | clog_pressure | parallel | mpi_splits | outputs | restart | bad_arguments |
+CASE: adhesion | clog | clog_pressure | clog_capped | parallel | mpi_splits | outputs | restart | bad_arguments |
       substep_force | reused_tag | outlet_exit
 """
 import math
@@ -109,6 +109,40 @@ def case_clog_pressure(h):
     check("clog_pressure_gap_speeds_bounded", fastest < 0.05, f"{fastest:.3g}",
           "largest fluid speed < 0.05 lattice (the fluid guard stops at 0.5)")
     check("clog_pressure_pressure_held", abs(last["pore[16]"] - 0.03) < 1e-9, last["pore[16]"], "P / P_out == 0.03")
+
+
+def case_clog_capped(h):
+    """The jam of in.clog under a ceiling on the velocity inlet's pressure loss (fix lbm/pore
+    max_pressure_loss, lbm::CappedVelocityDrive) at twice the particle-free loss: the jam
+    raises the loss (to 5.4 times the particle-free one without the ceiling) up to the ceiling,
+    where the inlet velocity falls instead and holds it; a restart carries the drive's state."""
+    u, clean = 0.003, 0.01294124
+    cap = 2.0 * clean
+    common = {"clean_steps": 100000, "restart_read": "", "fix_extra": f"max_pressure_loss {cap:.8g}",
+              "thermo_extra": "f_pore[37]"}
+    # The rows with particles (the particle-free run before them has other columns).
+    whole = [r for r in thermo_rows(h.run("in.clog", dict(common, steps=300000, restart_write="")).output)
+             if "pore[37]" in r]
+    held = [r for r in whole if r["Step"] >= 250000]
+    peak = max(r["p"] for r in whole)
+    check("capped_loss_never_far_above_the_ceiling", peak < 1.03 * cap, f"{peak / cap:.4g}",
+          "largest loss / ceiling < 1.03 (the drive answers over a few acoustic transits)")
+    check("capped_loss_held_at_the_ceiling", all(abs(r["p"] / cap - 1.0) < 0.02 for r in held),
+          f"{max(abs(r['p'] / cap - 1.0) for r in held):.3g}", "|loss / ceiling - 1| < 0.02 over the last 50000 steps")
+    last = whole[-1]
+    check("capped_inlet_velocity_lowered", last["pore[37]"] < 0.7 * u, f"{last['pore[37]'] / u:.3g}",
+          "inlet velocity / u < 0.7 while the jam holds the loss at the ceiling")
+    check("capped_inlet_velocity_at_most_u", max(r["pore[37]"] for r in whole) <= u, "", "<= u throughout")
+    check("capped_jam_deposited", last["pore[7]"] == 4, f"{last['pore[7]']:.0f}", "== 4 deposited")
+    first = h.run("in.clog", dict(common, steps=150000, restart_write="write_restart clog.restart"))
+    resumed = thermo_rows(h.run("in.restart_b", {"restart_file": "clog.restart", "steps": 150000,
+                                                 "fix_extra": common["fix_extra"], "thermo_extra": "f_pore[37]"},
+                                cwd=first.work).output)[-1]
+    # The same as the uninterrupted run (measured: 0): without the drive's state the inlet would
+    # restart at u and the inlet velocity differ by 4e-5 at the end.
+    for column in ("p", "pore[37]"):
+        diff = relative_difference(last[column], resumed[column])
+        check(f"capped_restart_relative_difference_{column}", diff < 1e-6, f"{diff:.3g}", "< 1e-6")
 
 
 def case_parallel(h):
@@ -368,6 +402,9 @@ BAD_CASES = [  # (fix line, second line, boundary "x yz", words the error must c
     # 1.0 with dt 0.01, n_dem 100 (the default), dx 1 is 1 cell per fluid step.
     (f"fix f all lbm/pore dx 1 {BAD} velocity 1.0", "", "f p", ["velocity", "0.30"]),
     (f"fix f all lbm/pore dx 1 {BAD} pressure_loss 5", "", "f p", ["pressure_loss", "0.9"]),
+    (f"fix f all lbm/pore dx 1 {BAD} velocity 0.001 max_pressure_loss 5", "", "f p", ["max_pressure_loss", "0.9"]),
+    (f"fix f all lbm/pore dx 1 {BAD} pressure_loss 0.01 max_pressure_loss 0.02", "", "f p",
+     ["'max_pressure_loss'", "velocity inlet"]),
     ("fix f all lbm/pore dx 1 scene pore inlet 6 free 4 length 14 outlet 16 width 20 diameter 15 "
      "velocity 0.001", "", "f p", ["scene", "simulation box"]),
     # 20 cells of 1.01 fill the box's width 20 to half a cell, but as a periodic length it
@@ -437,6 +474,7 @@ def case_threads_on_one_core(h):
 
 if __name__ == "__main__":
     main({"adhesion": case_adhesion, "clog": case_clog, "clog_pressure": case_clog_pressure,
+          "clog_capped": case_clog_capped,
           "parallel": case_parallel, "mpi_splits": case_mpi_splits, "outputs": case_outputs,
           "restart": case_restart, "bad_arguments": case_bad_arguments,
           "threads_on_one_core": case_threads_on_one_core, "substep_force": case_substep_force,

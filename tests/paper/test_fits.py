@@ -517,25 +517,6 @@ class PaperSizePlan(unittest.TestCase):
             for name, knobs in studies.runs_of(study, "quick"):
                 self.assertNotIn("n_dem", knobs)
 
-    def test_a_study_not_runnable_at_a_size_is_refused_with_its_reason(self):
-        """run_study.py launches nothing for studies.NOT_RUNNABLE (pvpflux at the paper size:
-        the empty pore under the imposed loss is past the lattice's speed limit) and says why;
-        --dry-run still lists the runs."""
-        import subprocess
-        script = os.path.join(REPO, "examples", "paper", "run_study.py")
-        with tempfile.TemporaryDirectory() as out:
-            refused = subprocess.run([sys.executable, script, "pvpflux", "--size", "paper", "--out", out,
-                                      "--no-evidence", "--driver", sys.executable],
-                                     capture_output=True, text=True)
-            self.assertNotEqual(refused.returncode, 0)
-            self.assertIn("pvpflux at size paper is not run", refused.stderr)
-            self.assertIn("doc/paper.md", refused.stderr)
-            self.assertFalse(os.path.exists(os.path.join(out, "runs")))
-            listed = subprocess.run([sys.executable, script, "pvpflux", "--size", "paper", "--out", out,
-                                     "--dry-run"], capture_output=True, text=True)
-            self.assertEqual(listed.returncode, 0, listed.stderr)
-            self.assertIn("P_0.35: ", listed.stdout)
-
     def test_cost_estimate_counts_the_dem_share(self):
         """A run at N_DEM 20 is estimated at 1 - 0.8 DEM_COST_SHARE of the same run at 100."""
         import studies

@@ -5,6 +5,8 @@
 // back; the monitor's restart record and the set-up helpers of pore_scene_setup.h.
 #include <gtest/gtest.h>
 
+#include <cstring>
+#include <string>
 #include <vector>
 
 #include "atom_states.h"
@@ -141,12 +143,24 @@ TEST(AtomStates, RestartEntriesOfBothLayoutsReadAForeignOneIsRefusedAndExchangeM
 }
 
 TEST(RestartRecord, TheMonitorStateAndTheCheckpointPathRoundTrip) {
-  const lbm_pore::RestartRecord record{{3.0, 1.5, -2.0}, "out/pore.fluid.1200"};
+  const lbm_pore::RestartRecord record{{3.0, 1.5, -2.0}, "out/pore.fluid.1200", {0.001, 0.25}};
   const std::string bytes = record.bytes();
-  EXPECT_EQ(bytes.size(), 4 * sizeof(double) + record.checkpoint.size() + 1);
+  EXPECT_EQ(bytes.size(), 8 * sizeof(double) + record.checkpoint.size() + 1);
   const lbm_pore::RestartRecord back = lbm_pore::RestartRecord::read(bytes.data());
   EXPECT_EQ(back.monitor_state, record.monitor_state);
+  EXPECT_EQ(back.drive_state, record.drive_state);
   EXPECT_EQ(back.checkpoint, record.checkpoint);
+  // A record written before the drive had a state: the monitor's values and the path, read
+  // with an empty drive state (restart files of runs parked then continue).
+  std::string old(sizeof(double), '\0');
+  const double count = 2.0, values[2] = {7.0, -1.0};
+  std::memcpy(old.data(), &count, sizeof(double));
+  old.append(reinterpret_cast<const char*>(values), sizeof values);
+  old.append("pore.fluid.800", 15);
+  const lbm_pore::RestartRecord earlier = lbm_pore::RestartRecord::read(old.data());
+  EXPECT_EQ(earlier.monitor_state, std::vector<double>({7.0, -1.0}));
+  EXPECT_TRUE(earlier.drive_state.empty());
+  EXPECT_EQ(earlier.checkpoint, "pore.fluid.800");
   lbm_pore::PoreOptions options;
   EXPECT_EQ(lbm_pore::checkpoint_path(lbm_pore::checkpoint_prefix(options, "pore"), 1200), "pore.fluid.1200");
   options.checkpoint_prefix = "run/state";

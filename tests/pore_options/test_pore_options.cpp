@@ -61,6 +61,13 @@ TEST(PoreOptions, AllKeywords) {
   EXPECT_TRUE(o.substep_fraction);
 }
 
+TEST(PoreOptions, ACeilingOnTheVelocityInletsLoss) {
+  const auto o = lbm_pore::parse_pore_options(split("dx 1" + kScene + " max_pressure_loss 0.05"));
+  EXPECT_EQ(o.drive, lbm_pore::PoreOptions::Drive::kVelocity);
+  EXPECT_DOUBLE_EQ(o.max_pressure_loss, 0.05);
+  EXPECT_EQ(lbm_pore::parse_pore_options(split("dx 1" + kScene)).max_pressure_loss, 0.0);
+}
+
 TEST(PoreOptions, MassCorrectionInTheKernel) {
   const auto o = lbm_pore::parse_pore_options(split("dx 1 mass_correction kernel" + kScene));
   EXPECT_TRUE(o.mass_correction);
@@ -115,6 +122,14 @@ TEST(PoreOptions, BadValuesNameTheKeywordAndRange) {
                 .find("drive is required"),
             std::string::npos);
   EXPECT_NE(error_of("dx 1 vtk 10").find("'vtk (directory)' needs a value"), std::string::npos);
+  // The ceiling on the loss caps a velocity inlet: with a pressure drive or a closed box it
+  // would silently do nothing.
+  EXPECT_NE(error_of("dx 1 scene pore inlet 3 free 2 length 4 outlet 3 width 5 diameter 3 pressure_loss 0.01 "
+                     "max_pressure_loss 0.02")
+                .find("'max_pressure_loss' caps the pressure loss of a velocity inlet"),
+            std::string::npos);
+  EXPECT_NE(error_of("dx 1" + kScene + " max_pressure_loss 0").find("'max_pressure_loss' = '0': must be a number in (0,"),
+            std::string::npos);
   // Two drives used to be accepted silently, the last one winning.
   EXPECT_NE(error_of("dx 1" + kScene + " pressure_loss 0.01").find("exclude each other"),
             std::string::npos);
