@@ -308,6 +308,13 @@ std::string setup_summary(const PoreOptions& o, const coupling::UnitConversion& 
     n += std::snprintf(text + n, sizeof text - n,
                        "fix lbm/pore: pressure loss %g = %.4g lattice (density difference %.3g)\n", o.drive_value,
                        drive.pressure_loss, 3.0 * drive.pressure_loss);
+  if (o.max_pressure_loss > 0.0) {
+    const double ceiling = units.pressure_to_lattice(o.max_pressure_loss);
+    n += std::snprintf(text + n, sizeof text - n,
+                       "fix lbm/pore: pressure loss at most %g = %.4g lattice (%.3g P_out): the inlet velocity is "
+                       "lowered to hold it (max_pressure_loss)\n",
+                       o.max_pressure_loss, ceiling, 3.0 * ceiling);
+  }
   const bool links_in_kernel =
       o.moving_walls_in_kernel && o.mass_correction && o.mass_correction_in_kernel && o.boundary == "mls";
   n += std::snprintf(text + n, sizeof text - n,
