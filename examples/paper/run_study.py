@@ -6,6 +6,7 @@
                [--timeout S] [--add-run NAME:knob=value,...] [--set knob=value ...]
                [--restart-every FLUID_STEPS] [--fresh] [--retry-failed] [--runs REGEX]
                [--progress-every S] [--summarize] [--evidence DIR | --no-evidence] [--park]
+               [--stop-after S]
                [--dry-run] [--no-analysis]
 
 Studies: singlejump collection dropvol porelength porediameter phaseac phasead conc pvpflux
@@ -36,7 +37,9 @@ What the repository keeps (--evidence DIR; at the paper size doc/paper/<study> u
 later launch runs again, and, when the runner is stopped or ends with runs cut short (a
 timeout; or --park from another shell), each such run with its newest restart file and fluid
 checkpoint, which a launch on a fresh clone unpacks and resumes. Commit DIR after each sitting
-and the same command continues the study anywhere.
+and the same command continues the study anywhere. --stop-after S stops the runner S seconds
+after it starts as SIGTERM does (the runs write a restart file, those cut short are parked):
+for a sitting of known length, the runs are in the tree before the machine goes.
 """
 import argparse
 import glob
@@ -159,6 +162,9 @@ def main():
                         help="where the repository keeps the study's runs (default at the paper "
                              "size: doc/paper/<study>)")
     parser.add_argument("--no-evidence", action="store_true", help="keep nothing in the repository")
+    parser.add_argument("--stop-after", type=float, default=None, metavar="S",
+                        help="stop as on SIGTERM S seconds after the start: the runs write a "
+                             "restart file, those cut short are parked into --evidence")
     parser.add_argument("--park", action="store_true",
                         help="launch nothing: keep the finished runs and park the runs cut short "
                              "into --evidence as they stand")
@@ -237,6 +243,11 @@ def main():
         sys.exit(128 + signum)
     signal.signal(signal.SIGTERM, stop)
     signal.signal(signal.SIGINT, stop)
+    if args.stop_after is not None:
+        # The signal reaches the main thread, which stops as it would on one from outside.
+        timer = threading.Timer(args.stop_after, os.kill, (os.getpid(), signal.SIGTERM))
+        timer.daemon = True
+        timer.start()
     launch = ensemble.launch_pool if args.mode == "pool" else ensemble.launch_partitions
     launches = []
     chosen = [(name, knobs) for name, knobs in runs

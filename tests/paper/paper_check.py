@@ -29,7 +29,8 @@ own files independently of the code it checks:
             empty folder (a fresh clone) with the same evidence unpacks it, resumes it,
             finishes, keeps its compact result and drops the archive, and its burst records
             equal, byte for byte, those of the resume in the run's own folder.
-            A third launch leaves the finished run alone.
+            A third launch leaves the finished run alone. --stop-after 3 stops a runner as
+            SIGTERM does: exit 143, no process left.
 
 Usage: paper_check.py --driver liggghts-lbm --repo <source root> --python /usr/bin/python3 <case>
 """
@@ -337,6 +338,13 @@ def resume(args, work):
     third = run_study(args, cut, *base)
     ok &= check("a finished run is left alone", "left alone (done)" in third.stdout
                 and "launch (" not in third.stdout.split("progress:")[-1], "see above", "left alone, no launch")
+    # --stop-after: the runner stops itself as on SIGTERM, for a sitting of known length.
+    timed_out = os.path.join(work, "timed")
+    timed = run_study(args, timed_out, *base, "--stop-after", "3")
+    left = subprocess.run(["pgrep", "-f", timed_out], capture_output=True, text=True).stdout.split()
+    ok &= check("--stop-after stops the runner as SIGTERM does",
+                timed.returncode == 128 + signal.SIGTERM and "signal 15" in timed.stdout and not left,
+                f"exit {timed.returncode}, processes left {left}", f"exit {128 + signal.SIGTERM}, none left")
     return ok
 
 
