@@ -125,11 +125,12 @@ TEST(CappedDrive, KeepsTheVelocityWhereTheLossStaysBelowTheCeiling) {
   EXPECT_NEAR(run.end.pressure_loss / reference, 1.0, 1e-9);
 }
 
-// A pore that opens while the inlet is held low (here a start at a tenth of u_max under a
-// ceiling the open pore never reaches) gets u_max back within a few relaxation times.
+// A pore that opens while the inlet is held low gets u_max back (here a start at a tenth of
+// u_max, the loss far below a ceiling 1.2 times the open pore's: the balance asks more than
+// u_max at once).
 TEST(CappedDrive, GivesTheVelocityBackWhenThePoreOpens) {
   const double reference = loss_at_max_velocity();
-  const CappedRun run = run_capped(2.0 * reference, kSteps, 0.1 * kMaxVelocity);
+  const CappedRun run = run_capped(1.2 * reference, kSteps, 0.1 * kMaxVelocity);
   const double relaxation = lbm::CappedVelocityDrive::kRelaxationTransits * 28 / lbm::kSoundSpeed;
   std::printf("from 0.1 u_max: velocity %.8g after %ld steps, held %ld steps (relaxation time %.0f steps)\n",
               run.velocity, kSteps, run.held_steps, relaxation);
