@@ -21,10 +21,12 @@
 // outlet make it noisy), C = N_fluid / c_s^2 the mass a unit of lattice pressure puts in the
 // box, T = kRelaxationTransits x (transit N_axis / c_s). In steady flow M_out is the inflow
 // and the loss is P_max exactly; below P_max the balance asks more than u_max and the clamp
-// holds u_max, the plain velocity inlet. It does so while C (P_max - P) / T exceeds what u_max
-// brings in beyond M_out: at the paper's size and u_lattice 0.0025 until the loss is within
-// 0.017 P_out of P_max. Where u_max is large against the box's compliance (u_lattice 0.02 on a
-// box of 50 cells) the velocity falls earlier and the loss approaches P_max over several T.
+// holds u_max, the plain velocity inlet. As a deposit grows (slowly: M_out is the inflow) that
+// lasts until the loss reaches P_max. While a box fills from rest (M_out below the inflow) it
+// lasts while C (P_max - P) / T exceeds the difference: C / (T rho A) is 0.33 on the paper's
+// scene, so at u_lattice 0.0025 until the loss is within 0.02 P_out of P_max; where u_max is
+// large against it (u_lattice 0.02 on the smoke sizes' box of 50 cells) a start from rest
+// lowers the velocity early, and it comes back over several T.
 #include <vector>
 
 #include "lbm/fluid_solver.h"
