@@ -263,7 +263,6 @@ def conc(size):
     return [(f"c_in_{c:g}", _phase_base(size, c_in=c)) for c in values]
 
 
-# Studies a size cannot run yet, with the reason run_study.py gives when asked to launch them.
 def pvpflux(size):
     """The imposed pressure loss as a ceiling on in.pore's inlet velocity (P_max: the pore fills
     at u_in, the loss is then held at P_max): the loss alone through the empty pore, 0.004 P_out
