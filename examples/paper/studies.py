@@ -265,8 +265,8 @@ def conc(size):
 
 def pvpflux(size):
     """The imposed pressure loss as a ceiling on in.pore's inlet velocity (P_max: the pore fills
-    at u_in, the loss is then held at P_max): the loss alone through the empty pore, 0.004 P_out
-    at u_in at the paper size, would drive it 25-125 times faster, past the lattice's limit
+    at u_in, the loss is then held at P_max): the loss alone through the empty pore, 0.0093 P_out
+    at u_in at the paper size, would drive it 11-54 times faster, past the lattice's limit
     (doc/paper.md, "pvpflux"). f_pore[37] is the inlet velocity the ceiling leaves."""
     pressures = _counts(size, [0.1, 0.4], [0.1, 0.2, 0.3, 0.35, 0.4, 0.5],
                         [0.1, 0.2, 0.3, 0.35, 0.4, 0.5])

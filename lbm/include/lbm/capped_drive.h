@@ -4,7 +4,7 @@
 // while the pressure loss p_in - p_out stays below P_max; once the loss reaches P_max the
 // inlet velocity is lowered to hold it there, and it rises again (at most to u_max) when the
 // pore opens. Neither plain drive does: P_max through the empty pore drives it far faster
-// than u_max (at the paper's size 25-125 times, beyond the lattice's stable speed), and a
+// than u_max (at the paper's size 11-54 times, beyond the lattice's stable speed), and a
 // clogging pore at u_max builds any loss.
 //
 // The inlet stays a velocity inlet throughout. A density inlet at P_max (FlowDrive::
