@@ -71,6 +71,12 @@ DriveFaces CappedVelocityDrive::update(FluidSolver& solver) {
   return faces;
 }
 
+double drive_inlet_velocity(const FluidSolver& solver, const CappedVelocityDrive* capped) {
+  if (capped) return capped->inlet_velocity();
+  if (solver.drive().kind == FlowDrive::kInletVelocity) return solver.drive().inlet_velocity;
+  return read_drive_faces(solver).inlet_velocity;
+}
+
 std::vector<double> CappedVelocityDrive::state() const { return {inlet_velocity_, mean_outflow_}; }
 
 void CappedVelocityDrive::set_state(const std::vector<double>& state, FluidSolver& solver) {

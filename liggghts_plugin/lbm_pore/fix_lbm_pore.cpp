@@ -107,13 +107,6 @@ void FixLbmPore::init() {
     fluid_steps_ = solver_->time_step();
     resumed_ = true;
     resume_checkpoint_.clear();
-    // The capped drive's inlet velocity as it was; a restart file without one (a run made
-    // without the keyword, or before the drive had a state) starts it at the velocity.
-    if (capped_drive_ && !restored_drive_state_.empty()) {
-      const std::string failure =
-          lbm_pore::try_on_every_rank(world, [&] { capped_drive_->set_state(restored_drive_state_, *solver_); });
-      if (!failure.empty()) error->all(FLERR, ("fix lbm/pore: restart: max_pressure_loss: " + failure).c_str());
-    }
   }
   if (comm->ghost_velocity == 0)
     error->all(FLERR, "fix lbm/pore needs ghost velocities: add 'communicate single vel yes'");
@@ -162,7 +155,7 @@ void FixLbmPore::build_lattice(std::unique_ptr<coupling::UnitConversion> units) 
   // Collective: every rank refuses together a lattice that does not fit (size and memory named).
   lbm_pore::check_lattice_memory(options_, decomposition.owned, geometry_->dims(), lbm::Communicator(world));
   solver_ = std::make_unique<lbm::FluidSolver>(*geometry_, p, drive, decomposition);
-  capped_drive_ = lbm_pore::capped_drive_of(options_, *units_, *solver_);
+  capped_drive_ = lbm_pore::capped_drive_of(options_, *units_, *solver_, restored_drive_state_);
   coupling_ = std::make_unique<coupling::SphereCoupling>(*solver_, lbm_pore::coupling_options(options_));
   lubrication_ = std::make_unique<coupling::LubricationKernel>(lbm_pore::lubrication_kernel(options_, *units_));
   lbm_pore::set_monitor_criteria(monitor_setup_, options_, *units_, drive);
@@ -257,8 +250,7 @@ void FixLbmPore::fluid_step() {
     check_particle_speed();
     const bool coupled = coupling::advance_fluid(*coupling_, particles_.view(), comm->cutghost, options_.dx,
                                                  solver_->decomposition().comm) == coupling::FluidStep::kCoupled;
-    // The next step's inlet velocity, from the faces of this one (collective).
-    if (capped_drive_) capped_drive_->update(*solver_);
+    if (capped_drive_) capped_drive_->update(*solver_);  // the next step's inlet velocity
     if (coupled)
       monitor_->record_coupling_mass(coupling_->last_surface_mass(),
                                      coupling_->last_mass_change().net_over(solver_->parameters().rho0));

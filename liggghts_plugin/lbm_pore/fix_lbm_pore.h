@@ -97,7 +97,6 @@ class FixLbmPore : public Fix {
   void record_particles();
   void start_monitor();
   bool at_fluid_step() const;
-  double inlet_velocity() const;
   void record_fluid_step();
   void check_fluid_state();
   void check_particle_speed();

@@ -10,9 +10,7 @@
 #include "error.h"
 #include "fix_lbm_pore.h"
 #include "liggghts_queries.h"
-#include "lbm/capped_drive.h"
 #include "lbm/fluid_solver.h"
-#include "lbm/input_error.h"
 #include "modify.h"
 #include "pore_scene_setup.h"
 #include "plugin_common/stop_run.h"
@@ -63,18 +61,12 @@ void FixLbmPore::record_particles() {
   monitor_->record_particles(particles_.view(), bonded_, on_wall_, loads, solver_->decomposition().comm);
 }
 
-// The monitor, with the state of the restart file a run resumes from, and its files: the
-// bursts (rank 0 writes) and the deposit region's speeds (every rank counts, rank 0 writes);
-// a resumed run appends to both. A file that cannot be opened stops the run from rank 0,
-// naming the keyword.
+// The monitor (from the restart file's state where a run resumes) and its files: the bursts
+// (rank 0 writes) and the deposit speeds (every rank counts, rank 0 writes), appended to when
+// resumed; a file that cannot be opened stops the run from rank 0, naming the keyword.
 void FixLbmPore::start_monitor() {
-  monitor_ = std::make_unique<coupling::PoreMonitor>(monitor_setup_, *units_);
+  monitor_ = lbm_pore::pore_monitor_of(monitor_setup_, *units_, restored_state_);
   const bool resumed = !restored_state_.empty();
-  try {
-    if (resumed) monitor_->restore(restored_state_);
-  } catch (const std::invalid_argument& e) {
-    throw lbm::InputError(std::string("restart: ") + e.what());
-  }
   const char* keyword = "burst_file";
   try {
     if (comm->me == 0 && !options_.burst_file.empty())
@@ -104,7 +96,8 @@ double FixLbmPore::compute_array(int row, int column) { return monitor_->burst_v
 // The fluid values it reads include the lattice Mach number: a flow beyond the lattice's
 // accuracy is said once per run.
 double FixLbmPore::compute_vector(int index) {
-  if (index == kInletVelocityIndex) return units_->velocity_to_physical(inlet_velocity());
+  if (index == kInletVelocityIndex)
+    return units_->velocity_to_physical(lbm::drive_inlet_velocity(*solver_, capped_drive_.get()));
   const double value = monitor_->value(index, *solver_, fluid_steps_);
   // The Mach number is reduced over the ranks: all of them locate the fast node together.
   const double mach = monitor_->values()[coupling::PoreMonitor::kLatticeMach];
@@ -115,14 +108,6 @@ double FixLbmPore::compute_vector(int index) {
     if (comm->me == 0) error->warning(FLERR, warning.c_str());
   }
   return value;
-}
-
-// The inlet velocity of the drive (lattice units): the capped drive's for the next step, the
-// velocity inlet's, or a density inlet's mean over its face in the last step (collective).
-double FixLbmPore::inlet_velocity() const {
-  if (capped_drive_) return capped_drive_->inlet_velocity();
-  if (solver_->drive().kind == lbm::FlowDrive::kInletVelocity) return solver_->drive().inlet_velocity;
-  return lbm::read_drive_faces(*solver_).inlet_velocity;
 }
 
 // Where the time of the run went, on rank 0.

@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <stdexcept>
 #include <string>
 #include <utility>
 
@@ -160,8 +161,21 @@ lbm::FlowDrive drive_of(const PoreOptions& o, const coupling::UnitConversion& un
   throw lbm::InputError(text);
 }
 
+std::unique_ptr<coupling::PoreMonitor> pore_monitor_of(const coupling::PoreMonitorSetup& setup,
+                                                       const coupling::UnitConversion& units,
+                                                       const std::vector<double>& restored_state) {
+  auto monitor = std::make_unique<coupling::PoreMonitor>(setup, units);
+  try {
+    if (!restored_state.empty()) monitor->restore(restored_state);
+  } catch (const std::invalid_argument& e) {
+    throw lbm::InputError(std::string("restart: ") + e.what());
+  }
+  return monitor;
+}
+
 std::unique_ptr<lbm::CappedVelocityDrive> capped_drive_of(const PoreOptions& o, const coupling::UnitConversion& units,
-                                                          const lbm::FluidSolver& solver) {
+                                                          lbm::FluidSolver& solver,
+                                                          const std::vector<double>& restored_state) {
   if (!(o.max_pressure_loss > 0.0)) return nullptr;
   lbm::FlowDrive pressure = solver.drive();
   pressure.kind = lbm::FlowDrive::kPressureLoss;
@@ -173,7 +187,13 @@ std::unique_ptr<lbm::CappedVelocityDrive> capped_drive_of(const PoreOptions& o, 
                   o.max_pressure_loss, violation.c_str());
     throw lbm::InputError(text);
   }
-  return std::make_unique<lbm::CappedVelocityDrive>(solver, solver.drive(), pressure.pressure_loss);
+  auto capped = std::make_unique<lbm::CappedVelocityDrive>(solver, solver.drive(), pressure.pressure_loss);
+  try {
+    if (!restored_state.empty()) capped->set_state(restored_state, solver);
+  } catch (const std::invalid_argument& e) {
+    throw lbm::InputError(std::string("restart: max_pressure_loss: ") + e.what());
+  }
+  return capped;
 }
 
 void check_boundaries(const PoreOptions& o, const int* periodicity) {

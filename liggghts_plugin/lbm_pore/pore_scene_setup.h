@@ -5,6 +5,7 @@
 #include <array>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "coupling/diagnostics/pore_monitor.h"
 #include "coupling/force/substep_load.h"
@@ -47,11 +48,14 @@ void check_lattice_memory(const PoreOptions& options, const lbm::Box& owned,
 lbm::FlowDrive drive_of(const PoreOptions& options, const coupling::UnitConversion& units);
 
 // The ceiling on the velocity inlet's pressure loss ('max_pressure_loss'), on the solver's
-// drive; null without the keyword. Throws lbm::InputError naming 'max_pressure_loss' when the
-// loss exceeds a pressure drive's limit (lbm/stability.h).
+// drive, continuing from a restart file's state (empty: at the velocity, as a run made without
+// the keyword or before the drive had a state); null without the keyword. Throws
+// lbm::InputError naming 'max_pressure_loss' when the loss exceeds a pressure drive's limit
+// (lbm/stability.h) or the state is not the drive's.
 std::unique_ptr<lbm::CappedVelocityDrive> capped_drive_of(const PoreOptions& options,
                                                           const coupling::UnitConversion& units,
-                                                          const lbm::FluidSolver& solver);
+                                                          lbm::FluidSolver& solver,
+                                                          const std::vector<double>& restored_state);
 
 // The fluid's lateral boundaries and LIGGGHTS's periodicity (domain->periodicity) must agree,
 // and the flow axis x must not be periodic. Throws lbm::InputError saying what to change.
@@ -68,6 +72,12 @@ coupling::BurstCriteria burst_criteria(const PoreOptions& options, const couplin
 
 // The monitor's criteria, once the drive is known, set in the scene's `setup`: the deposit
 // speed threshold (deposit_speed_threshold), the burst criteria and 'burst_deposits'.
+// The pore monitor, continuing from a restart file's state (empty: a new run). Throws
+// lbm::InputError starting "restart: " on a state of another version.
+std::unique_ptr<coupling::PoreMonitor> pore_monitor_of(const coupling::PoreMonitorSetup& setup,
+                                                       const coupling::UnitConversion& units,
+                                                       const std::vector<double>& restored_state);
+
 void set_monitor_criteria(coupling::PoreMonitorSetup& setup, const PoreOptions& options,
                           const coupling::UnitConversion& units, const lbm::FlowDrive& drive);
 

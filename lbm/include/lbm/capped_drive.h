@@ -82,4 +82,9 @@ class CappedVelocityDrive {
   void impose(FluidSolver& solver);
 };
 
+// The inlet velocity of a drive (lattice units): the capped drive's for the next step (where
+// `capped` is given), a velocity inlet's, or a density inlet's mean over its face in the last
+// step (read_drive_faces: collective).
+double drive_inlet_velocity(const FluidSolver& solver, const CappedVelocityDrive* capped);
+
 }  // namespace lbm
