@@ -6,9 +6,10 @@ bursts.txt, its cost (cost.txt, run_cost), its deposit speed survey (deposit_spe
 snapshot figure's frames (snapshots.npz, render_snapshot.py --keep) and replay record
 (replay.json, replay_window.py) if any, and the thermo columns the analyses read
 (thermo.csv.gz, every `every`-th row and every row from a burst's window before its peak,
-BURST_WINDOW fluid steps, to half a window after it; whole numbers exactly, the rest at
-KEPT_DIGITS significant digits), with the ERROR line of a run that stopped. analyze.py reads
-the compacted folder as it reads the study (study_io).
+BURST_WINDOW fluid steps, to half a window after it; COLUMNS and those the run's thermo_extra
+asked for; whole numbers exactly, the rest at KEPT_DIGITS significant digits), with the ERROR
+line of a run that stopped. analyze.py reads the compacted folder as it reads the study
+(study_io).
 
 Usage: compact_study.py <study folder> <destination> [--every N]
        compact_study.py --reround <compacted run folder>...   (a folder kept at more digits)
@@ -20,6 +21,7 @@ import gzip
 import io
 import math
 import os
+import re
 import shutil
 import sys
 
@@ -64,6 +66,14 @@ def write_kept_thermo(out, names, columns, kept_rows):
             w.writerow([kept_value(float(columns[c][i])) for c in names])
 
 
+def asked_columns(knobs):
+    """The thermo columns a run's knob thermo_extra added (in.pore's `thermo_extra`), named as
+    LIGGGHTS heads them (f_pore[3] -> pore[3], c_x -> x, v_x -> x): the study that asked for
+    them reads them (pvpflux the fluxes and the inlet velocity, conc the particle volume
+    through the inlet plane), so they are kept beside COLUMNS."""
+    return tuple(re.sub(r"^[fcv]_", "", word) for word in knobs.get("thermo_extra", "").split())
+
+
 def compact(study, dest, every=10):
     os.makedirs(dest, exist_ok=True)
     for pattern in ("summary.txt", "results.json", "*.png", "calibration.md", "progress.txt"):
@@ -92,7 +102,8 @@ def compact_run(run, out, every=10):
     columns = study_io.thermo(run)
     if not columns:
         return
-    names = [c for c in COLUMNS if c in columns]
+    wanted = COLUMNS + asked_columns(study_io.read_knobs(run))
+    names = [c for c in dict.fromkeys(wanted) if c in columns]
     peaks = [b["step"] for b in study_io.bursts(run)]
     steps = columns["Step"]
     window = study_io.burst_window_dem_steps(run, study_io.read_knobs(run))

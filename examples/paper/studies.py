@@ -260,7 +260,9 @@ def conc(size):
     # paper: around the paper's onset, 0.013, by factors of about two
     values = _counts(size, [0.02, 0.05], [0.0, 0.01, 0.02, 0.05, 0.1],
                      [0.0, 0.005, 0.01, 0.02, 0.05, 0.1])
-    return [(f"c_in_{c:g}", _phase_base(size, c_in=c)) for c in values]
+    # f_pore[12], the particle volume through the inlet plane: the concentration each run
+    # realised (figures/conc.py)
+    return [(f"c_in_{c:g}", _phase_base(size, c_in=c, thermo_extra="f_pore[12]")) for c in values]
 
 
 def pvpflux(size):

@@ -32,19 +32,21 @@ HEADER = ("Step Atoms pore[1] pore[6] pore[7] pore[8] pore[4] pore[5] pore[10] b
           "pore[16] pore[17] pore[18]")
 
 
-def write_run(folder, p0, bursts, warmup=2000, D=3.5, Lp=4.25, deposits=None):
+def write_run(folder, p0, bursts, warmup=2000, D=3.5, Lp=4.25, deposits=None, extra=()):
     """A finished run: a log whose warm-up rows hold P / P_out = p0 (after a start-up
     overshoot), and a burst file with the given (V_dep, L_dep, P_peak) rows; with `deposits`
     (count, V, L per burst: the deposit before the peak) in today's columns, else in those
-    written before the records carried it."""
+    written before the records carried it. `extra`: more thermo columns (as thermo_extra
+    adds them), each the step times its position."""
     os.makedirs(folder)
-    names = HEADER.split()
+    names = HEADER.split() + list(extra)
     with open(os.path.join(folder, "log.liggghts"), "w") as f:
         f.write("fix lbm/pore: ... dt_lbm = 1 (n_dem = 100 x dt_dem = 0.01), dx = 0.140845\n")
-        f.write(HEADER + "\n")
+        f.write(" ".join(names) + "\n")
         for step in range(0, 2 * warmup + 1, 100):
             p = 3.0 * p0 if step < warmup / 2 else p0  # the overshoot must not enter P_0
-            row = dict.fromkeys(names, 0.0)
+            row = {name: step * (k + 1.0) for k, name in enumerate(extra)}
+            row.update(dict.fromkeys(HEADER.split(), 0.0))
             row.update({"Step": step, "pore[16]": p, "pore[17]": 3.0 * p0})
             f.write(" ".join(f"{row[n]:.12g}" for n in names) + "\n")
     with open(os.path.join(folder, "bursts.txt"), "w") as f:
@@ -351,6 +353,33 @@ class CompactedEvidence(unittest.TestCase):
                 for key in ("excess_through_origin", "pearson"):
                     self.assertTrue(np.isfinite(a[key][0]))
                     self.assertAlmostEqual(a[key][0], b[key][0], places=6)
+
+
+    def test_the_columns_a_run_asked_for_are_kept(self):
+        """pvpflux reads its fluxes and inlet velocity, conc the volume through the inlet
+        plane: columns its runs add with thermo_extra, which the compact result keeps beside
+        the fixed ones (and those of a run that did not ask, it drops)."""
+        import json
+        import compact_study
+        self.assertEqual(compact_study.asked_columns(dict(thermo_extra="f_pore[3] f_pore[13] v_u_in c_bonds")),
+                         ("pore[3]", "pore[13]", "u_in", "bonds"))
+        self.assertEqual(compact_study.asked_columns({}), ())
+        with tempfile.TemporaryDirectory() as tmp:
+            extra = ("pore[3]", "pore[13]", "pore[37]")
+            for name, asked in (("asked", "f_pore[3] f_pore[13] f_pore[37]"), ("not_asked", "")):
+                run = write_run(os.path.join(tmp, "study", "runs", name), 0.05, [(1.0, 0.5, 0.2)], extra=extra)
+                with open(os.path.join(run["folder"], "knobs.json"), "w") as f:
+                    json.dump(dict(run["knobs"], cells_per_d="7.1", thermo_extra=asked), f)
+            compact_study.compact(os.path.join(tmp, "study"), os.path.join(tmp, "evidence"))
+            kept = common.thermo(os.path.join(tmp, "evidence", "runs", "asked"))
+            original = common.thermo(os.path.join(tmp, "study", "runs", "asked"))
+            index = [original["Step"].index(step) for step in kept["Step"]]
+            for name in extra:
+                np.testing.assert_allclose(kept[name], np.asarray(original[name])[index], rtol=1e-5)
+            self.assertIn("pore[16]", kept)
+            dropped = common.thermo(os.path.join(tmp, "evidence", "runs", "not_asked"))
+            self.assertFalse(set(extra) & set(dropped))
+            self.assertIn("pore[16]", dropped)
 
 
 class TimeMeans(unittest.TestCase):
