@@ -102,11 +102,11 @@ def compact_run(run, out, every=10):
     columns = study_io.thermo(run)
     if not columns:
         return
-    wanted = COLUMNS + asked_columns(study_io.read_knobs(run))
-    names = [c for c in dict.fromkeys(wanted) if c in columns]
+    knobs = study_io.read_knobs(run)
+    names = [c for c in dict.fromkeys(COLUMNS + asked_columns(knobs)) if c in columns]
     peaks = [b["step"] for b in study_io.bursts(run)]
     steps = columns["Step"]
-    window = study_io.burst_window_dem_steps(run, study_io.read_knobs(run))
+    window = study_io.burst_window_dem_steps(run, knobs)
     near = lambda s: any(-window <= s - p <= window / 2 for p in peaks)  # noqa: E731
     write_kept_thermo(out, names, columns,
                       [i for i, s in enumerate(steps) if i % every == 0 or i == len(steps) - 1 or near(s)])
