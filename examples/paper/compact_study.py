@@ -7,12 +7,13 @@ snapshot figure's frames (snapshots.npz, render_snapshot.py --keep) and replay r
 (replay.json, replay_window.py) if any, and the thermo columns the analyses read
 (thermo.csv.gz, every `every`-th row and every row from a burst's window before its peak,
 BURST_WINDOW fluid steps, to half a window after it; COLUMNS and those the run's thermo_extra
-asked for; whole numbers exactly, the rest at KEPT_DIGITS significant digits), with the ERROR
-line of a run that stopped. analyze.py reads the compacted folder as it reads the study
-(study_io).
+asked for, WINDOW_COLUMNS left blank in the rows outside those windows; whole numbers exactly,
+the rest at KEPT_DIGITS significant digits), with the ERROR line of a run that stopped.
+analyze.py reads the compacted folder as it reads the study (study_io).
 
 Usage: compact_study.py <study folder> <destination> [--every N]
-       compact_study.py --reround <compacted run folder>...   (a folder kept at more digits)
+       compact_study.py --blank-between-bursts <compacted run folder>...   (a run kept before
+                                                                  with WINDOW_COLUMNS in every row)
 """
 import argparse
 import csv
@@ -36,23 +37,30 @@ import run_cost  # noqa: E402
 COLUMNS = ("Step", "Atoms", "pore[16]", "pore[17]", "pore[7]", "pore[6]", "pore[8]", "pore[10]",
            "walls[2]", "pore[14]", "pore[18]", "pore[27]") + tuple(f"pore[{i}]" for i in range(28, 34)) + \
     ("pore[26]", "pore[34]", "pore[35]", "pore[36]")
+# Read only at a burst's peak or in its window (figures.hold, figures.porediameter's f_a,
+# deposit_measure.py): the forces on all particles and on the deposit, its particles on the
+# wall, the deposited counts under the scaled speed bounds. Blank in the rows kept between
+# the bursts' windows, they take about a third less room (a paper-length run of 79 bursts:
+# 0.81 -> 0.6 MB); study_io.thermo reads a blank as NaN.
+WINDOW_COLUMNS = ("walls[2]", "pore[14]", "pore[26]") + tuple(f"pore[{i}]" for i in range(28, 37))
 # Significant digits of a kept value that is not a whole number: a pressure of 0.3 P_out to
 # 10^-6 P_out, far below any digit doc/ reports, and a paper-length run's rows within about
 # 0.5 MB (8 digits took 0.4-0.8 MB a run at 27-66 bursts).
 KEPT_DIGITS = 6
 
 
-def kept_value(value):
+def kept_value(value, digits=KEPT_DIGITS):
     """A thermo value as the compact result writes it: steps, atom and deposit counts (whole
-    numbers) exactly, the rest at KEPT_DIGITS significant digits."""
+    numbers) exactly, the rest at `digits` significant digits (None: every digit it has)."""
     if math.isfinite(value) and value == int(value) and abs(value) < 1e15:
         return str(int(value))
-    return f"{value:.{KEPT_DIGITS}g}"
+    return repr(value) if digits is None else f"{value:.{digits}g}"
 
 
-def write_kept_thermo(out, names, columns, kept_rows):
-    """out/thermo.csv.gz: the columns `names` at the row indices `kept_rows`, replacing any
-    kept thermo file of an earlier compaction."""
+def write_kept_thermo(out, names, columns, kept_rows, in_window, digits=KEPT_DIGITS):
+    """out/thermo.csv.gz: the columns `names` at the row indices `kept_rows` (kept_value at
+    `digits`), WINDOW_COLUMNS blank where in_window(row index) is false, replacing any kept
+    thermo file of an earlier compaction."""
     for old in study_io.KEPT_THERMO:  # a folder compacted before keeps no stale copy
         if os.path.exists(os.path.join(out, old)):
             os.remove(os.path.join(out, old))
@@ -63,7 +71,9 @@ def write_kept_thermo(out, names, columns, kept_rows):
         w = csv.writer(f)
         w.writerow(names)
         for i in kept_rows:
-            w.writerow([kept_value(float(columns[c][i])) for c in names])
+            inside = in_window(i)
+            w.writerow([kept_value(float(columns[c][i]), digits) if inside or c not in WINDOW_COLUMNS else ""
+                        for c in names])
 
 
 def asked_columns(knobs):
@@ -104,20 +114,28 @@ def compact_run(run, out, every=10):
         return
     knobs = study_io.read_knobs(run)
     names = [c for c in dict.fromkeys(COLUMNS + asked_columns(knobs)) if c in columns]
-    peaks = [b["step"] for b in study_io.bursts(run)]
     steps = columns["Step"]
-    window = study_io.burst_window_dem_steps(run, knobs)
-    near = lambda s: any(-window <= s - p <= window / 2 for p in peaks)  # noqa: E731
+    near = near_a_burst(run, knobs, steps)
     write_kept_thermo(out, names, columns,
-                      [i for i, s in enumerate(steps) if i % every == 0 or i == len(steps) - 1 or near(s)])
+                      [i for i in range(len(steps)) if i % every == 0 or i == len(steps) - 1 or near(i)], near)
 
 
-def reround(kept_run):
-    """A compacted run's kept rows rewritten at KEPT_DIGITS (kept_value): the same rows and
-    columns, for a folder compacted when the rows kept 8 digits."""
+def near_a_burst(run, knobs, steps):
+    """near(i): whether thermo row i lies in a burst's window before its peak (BURST_WINDOW)
+    or half a window after it."""
+    peaks = [b["step"] for b in study_io.bursts(run)]
+    window = study_io.burst_window_dem_steps(run, knobs)
+    return lambda i: any(-window <= steps[i] - p <= window / 2 for p in peaks)
+
+
+def blank_between_bursts(kept_run):
+    """A run compacted before WINDOW_COLUMNS were left blank outside the bursts' windows,
+    rewritten so: the same rows and columns, every other value exactly as it was kept (so
+    every analysis of it gives what it gave)."""
     columns = study_io.thermo(kept_run)
     if columns:
-        write_kept_thermo(kept_run, list(columns), columns, range(len(columns["Step"])))
+        near = near_a_burst(kept_run, study_io.read_knobs(kept_run), columns["Step"])
+        write_kept_thermo(kept_run, list(columns), columns, range(len(columns["Step"])), near, digits=None)
 
 
 if __name__ == "__main__":
@@ -125,12 +143,12 @@ if __name__ == "__main__":
     parser.add_argument("study", nargs="?")
     parser.add_argument("dest", nargs="?")
     parser.add_argument("--every", type=int, default=10)
-    parser.add_argument("--reround", nargs="+", metavar="KEPT_RUN", default=[])
+    parser.add_argument("--blank-between-bursts", nargs="+", metavar="KEPT_RUN", default=[])
     args = parser.parse_args()
-    if args.reround:
-        for run in args.reround:
-            reround(run)
+    if args.blank_between_bursts:
+        for run in args.blank_between_bursts:
+            blank_between_bursts(run)
     elif args.study and args.dest:
         compact(args.study, args.dest, args.every)
     else:
-        parser.error("give <study folder> <destination>, or --reround <compacted run folder>...")
+        parser.error("give <study folder> <destination>, or --blank-between-bursts <compacted run folder>...")

@@ -13,6 +13,7 @@ import csv
 import glob
 import gzip
 import json
+import math
 import os
 import re
 import sys
@@ -104,7 +105,8 @@ def thermo(run_dir):
         opener = gzip.open if kept.endswith(".gz") else open
         with opener(kept, "rt", newline="") as f:
             rows = list(csv.reader(f))
-        return {name: [float(row[j]) for row in rows[1:]] for j, name in enumerate(rows[0])}
+        # a blank: a column compact_study keeps only in the bursts' windows (WINDOW_COLUMNS)
+        return {name: [float(row[j]) if row[j] else math.nan for row in rows[1:]] for j, name in enumerate(rows[0])}
     try:
         header, rows = read_thermo(log)
     except SystemExit:  # read_thermo exits on a log without thermo rows

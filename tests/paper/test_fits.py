@@ -381,6 +381,41 @@ class CompactedEvidence(unittest.TestCase):
             self.assertFalse(set(extra) & set(dropped))
             self.assertIn("pore[16]", dropped)
 
+    def test_the_forces_are_kept_in_the_bursts_windows_only(self):
+        """The forces on the deposit and on all particles are read at a burst's peak: the
+        compact result keeps them in the bursts' windows (10^5 DEM steps before a peak to half
+        of that after) and leaves them blank between, read back as NaN; the pressures and
+        counts stay in every kept row. A run kept before with them in every row, rewritten by
+        blank_between_bursts, is byte for byte what compact_run writes now."""
+        import json
+        import compact_study
+        with tempfile.TemporaryDirectory() as tmp:
+            forces = ("walls[2]", "pore[35]")
+            run = write_run(os.path.join(tmp, "study", "runs", "run0"), 0.05, [(1.0, 0.5, 0.2), (2.0, 0.9, 0.3)],
+                            warmup=100000, extra=forces)  # rows to DEM step 2e5, bursts at 1e4, 1.01e4
+            with open(os.path.join(run["folder"], "knobs.json"), "w") as f:
+                json.dump(dict(run["knobs"], cells_per_d="7.1"), f)
+            kept_run = os.path.join(tmp, "evidence", "runs", "run0")
+            compact_study.compact(os.path.join(tmp, "study"), os.path.join(tmp, "evidence"))
+            original, kept = common.thermo(run["folder"]), common.thermo(kept_run)
+            index = [original["Step"].index(step) for step in kept["Step"]]
+            inside = np.array([-1e5 <= s - p <= 5e4 for s in kept["Step"] for p in (10100,)])
+            self.assertTrue(inside.any() and (~inside).any())
+            for name in forces:
+                values = np.asarray(kept[name])
+                np.testing.assert_allclose(values[inside], np.asarray(original[name])[index][inside], rtol=1e-5)
+                self.assertTrue(np.isnan(values[~inside]).all())
+            for name in ("Step", "pore[16]", "pore[7]"):
+                self.assertTrue(np.isfinite(kept[name]).all())
+            with open(os.path.join(kept_run, "thermo.csv.gz"), "rb") as f:
+                now = f.read()
+            # as a compaction that kept every column in every row wrote it
+            compact_study.write_kept_thermo(kept_run, list(kept), original, index, lambda i: True)
+            self.assertFalse(np.isnan(common.thermo(kept_run)["walls[2]"]).any())
+            compact_study.blank_between_bursts(kept_run)
+            with open(os.path.join(kept_run, "thermo.csv.gz"), "rb") as f:
+                self.assertEqual(f.read(), now)
+
 
 class TimeMeans(unittest.TestCase):
     """Means over time from a compact result, which keeps every row of the bursts' windows and
