@@ -69,9 +69,18 @@ def porediameter(r):
                          (_within(e, 1.0, 0.2), f"exponent {e:.3g} outside 1 +- 0.2")])
 
 
+def _across_pore(r, name):
+    """'; P across the pore, beside: <name> X, Pearson Y' where the results carry it
+    (figures.common.across_pore_fits), else ''."""
+    across = r.get("across_pore", {})
+    if not math.isfinite(_value(across.get("excess_through_origin"))):
+        return ""
+    return f"; P across the pore, beside: {name} {_fmt(across['excess_through_origin'])}, Pearson {_fmt(across['pearson'])}"
+
+
 def porelength(r):
     c, p = r.get("excess_coefficient"), r.get("pearson")
-    ours = f"c {_fmt(c)} on P - P_0 through 0, Pearson {_fmt(p)}{_over(r)}"
+    ours = f"c {_fmt(c)} on P - P_0 through 0, Pearson {_fmt(p)}{_over(r)}{_across_pore(r, 'c')}"
     cv, pv = _value(c), _value(p)
     return ours, _judge([(_within(cv, 0.27, 0.05), f"c {cv:.3g} outside 0.27 +- 0.05"),
                          (None if not math.isfinite(pv) else pv >= 0.8, f"Pearson {pv:.3g} below 0.8")])
@@ -79,7 +88,7 @@ def porelength(r):
 
 def dropvol(r):
     s, p = r.get("excess_through_origin"), r.get("pearson")
-    ours = f"slope {_fmt(s)} per D^3 on P - P_0 through 0, Pearson {_fmt(p)}{_over(r)}"
+    ours = f"slope {_fmt(s)} per D^3 on P - P_0 through 0, Pearson {_fmt(p)}{_over(r)}{_across_pore(r, 'slope')}"
     sv, pv = _value(s), _value(p)
     return ours, _judge([(_within(sv, 1.15, 0.25), f"slope {sv:.3g} outside 1.15 +- 0.25"),
                          (None if not math.isfinite(pv) else 0.5 <= pv <= 0.9,

@@ -855,6 +855,10 @@ class DiameterLaw(unittest.TestCase):
             near, far = dict(step=10100, P_peak=0.5), dict(step=10 ** 7, P_peak=0.5)  # far: no row near
             self.assertEqual([b["P_peak"] for b in common.across_pore_peaks(runs[0], [near, far])],
                              [0.8 * rows_of_D[2.11][1][2]])
+            # the fits porelength and dropvol show beside their own read it the same way
+            fits = common.pressure_fits(summary, lambda r, b: b["deposit_L"] / float(r["knobs"]["D"]),
+                                        deposit="median", pressure="across")
+        self.assertAlmostEqual(fits["excess_through_origin"][0], 0.72, places=9)
         self.assertAlmostEqual(faces["K"][0], 0.9, places=9)
         self.assertAlmostEqual(across["K"][0], 0.72, places=9)
         self.assertAlmostEqual(across["a"][0], faces["a"][0], places=9)
@@ -1040,6 +1044,10 @@ class FigureTable(unittest.TestCase):
         self.assertEqual(verdicts.verdict("porelength", low, 6, 6)[1], "misses: Pearson 0.74 below 0.8")
         self.assertEqual(verdicts.verdict("porelength", met, 3, 6)[1], "provisional (3 of 6 runs): meets")
         self.assertEqual(verdicts.verdict("porelength", None, 0, 6)[1], "no numbers: no run finished")
+        across = dict(met, across_pore=dict(excess_through_origin=[0.15, 0.13, 0.17], pearson=[0.63, 0.4, 0.8]))
+        ours, judged = verdicts.verdict("porelength", across, 6, 6)
+        self.assertIn("; P across the pore, beside: c 0.15 [0.13, 0.17], Pearson 0.63 [0.4, 0.8]", ours)
+        self.assertEqual(judged, "meets")  # judged on the figures' measure, the faces'
         law = dict(diameter_law=dict(K=[1.2, 1.0, 1.4], a=[0.9, 0.7, 1.1]))
         self.assertEqual(verdicts.verdict("porediameter", law, 8, 8)[1],
                          "misses: K 1.2 outside 0.91 +- 0.1")

@@ -175,7 +175,7 @@ def run_points(run, x_of, deposit="largest", pressure="faces"):
     return x, [b["P_peak"] for b in rows], [b["P_peak"] - p0 for b in rows] if np.isfinite(p0) else []
 
 
-def pressure_fits(summary, x_of, deposit="largest"):
+def pressure_fits(summary, x_of, deposit="largest", pressure="faces"):
     """The fits of the peak pressure against x_of(run, burst), the same three for every
     figure so that like is compared with like: the paper's line through the origin on P, the
     same on the pressure the deposit adds, P - P_0 (P_0 = clean_pressure of each run), and a
@@ -184,11 +184,11 @@ def pressure_fits(summary, x_of, deposit="largest"):
     coefficient, the per-run point groups and `unit`, what the intervals resample.
     deposit: "largest", the figures' measure (largest_deposit_before); "median", the burst
     records' deposit (the median over the burst window); or "peak", the record's count at the
-    peak (at_the_peak)."""
+    peak (at_the_peak). pressure: where P is read (PRESSURES), the faces' unless told."""
     from fit_stats import bootstrap, intercept, pearson, slope, slope_through_origin
     groups, excess = [], []
     for run in finished_runs(summary):
-        x, p, p_excess = run_points(run, x_of, deposit)
+        x, p, p_excess = run_points(run, x_of, deposit, pressure)
         groups.append((x, p))
         excess.append((x, p_excess))
     excess = [(x, y) for x, y in excess if len(y)]
@@ -241,6 +241,34 @@ def draw_beside(ax, beside):
         if x:
             ax.plot(x, y, marker, ms=5, mfc="none", mec=colour, mew=0.8,
                     label=f"deposit {label} (Pearson {fits['pearson'][0]:.2f})")
+
+
+def across_pore_fits(summary, x_of):
+    """pressure_fits of the figures' deposit with P read across the pore (PRESSURES), shown
+    beside the figure's own: the pressure the paper measures "on both sides of the pore",
+    without what the plug on the entrance face and the queue beyond the pore add."""
+    return pressure_fits(summary, x_of, pressure="across")
+
+
+def across_pore_text(fits):
+    """The across-the-pore fit in one phrase, for results.json."""
+    from fit_stats import fmt
+    return (f"beside it, P across the pore (f_pore[27]): P - P_0 through 0 "
+            f"{fmt(*fits['excess_through_origin'])}, Pearson {fmt(*fits['pearson'])}")
+
+
+def across_pore_results(fits):
+    """The across-the-pore fit for results.json (verdicts.py shows it beside the figure's)."""
+    return dict(across_pore={k: fits[k] for k in ("excess_through_origin", "pearson")})
+
+
+def draw_across_pore(ax, fits):
+    """The bursts with P read across the pore, as hollow triangles beside the figure's."""
+    x = [xi for g in fits["groups"] for xi in g[0]]
+    y = [yi for g in fits["groups"] for yi in g[1]]
+    if x:
+        ax.plot(x, y, "^", ms=5, mfc="none", mec="C9", mew=0.8,
+                label=f"P across the pore (Pearson {fits['pearson'][0]:.2f})")
 
 
 def draw_fits(ax, fits, top, paper=None, paper_label="paper"):

@@ -9,12 +9,13 @@ So V_dep is plotted per D^3, the unit whose slope the paper's 1.15 matches, and 
 pore volume is given beside it; each with the three fits of figures.common.pressure_fits, on the
 deposit every figure counts (figures.common.largest_deposit_before; doc/paper.md, "The
 deposit"), and beside it (hollow markers) the median over the burst window and the count at the
-peak."""
+peak, and P read across the pore (figures.common.across_pore_fits)."""
 import numpy as np
 
 from fit_stats import fmt
-from figures.common import (beside_fits, beside_results, beside_text, draw_beside, draw_fits, fits_text, plt,
-                            pressure_fits, result, save)
+from figures.common import (across_pore_fits, across_pore_results, across_pore_text, beside_fits, beside_results,
+                            beside_text, draw_across_pore, draw_beside, draw_fits, fits_text, plt, pressure_fits,
+                            result, save)
 
 PAPER_SLOPE, PAPER_PEARSON, PAPER_K = 1.15, 0.71, 0.91
 
@@ -32,12 +33,14 @@ def analyze(summary, out_dir):
     fits = pressure_fits(summary, per_cube_of_diameter)
     pore = pressure_fits(summary, per_pore_volume)
     beside = beside_fits(summary, per_cube_of_diameter)
+    across = across_pore_fits(summary, per_cube_of_diameter)
     groups = fits["groups"]
     fig, ax = plt.subplots(figsize=(6, 4.5))
     for x, y in groups:
         ax.plot(x, y, "o", ms=4, alpha=0.7)
     x = np.concatenate([g[0] for g in groups if len(g[0])] or [np.zeros(0)])
     draw_beside(ax, beside)
+    draw_across_pore(ax, across)
     draw_fits(ax, fits, x.max() if len(x) else 1.0, PAPER_SLOPE)
     ax.set_xlabel("V_dep of the deposit the burst tore off [D^3]")
     ax.set_ylabel("P_peak [P_out]")
@@ -49,11 +52,11 @@ def analyze(summary, out_dir):
                   f"{PAPER_SLOPE}(1) (4 K / pi = {4 * PAPER_K / np.pi:.3g} per D^3, K L / D = "
                   f"{PAPER_K * 4.23 / 3.52:.3g} per pore volume); {PAPER_PEARSON}(1)",
                   f"per D^3: {fits_text(fits)}; per pore volume: {fits_text(pore)}; "
-                  f"Pearson {fmt(*fits['pearson'])}; {beside_text(beside)}",
+                  f"Pearson {fmt(*fits['pearson'])}; {beside_text(beside)}; {across_pore_text(across)}",
                   save(fig, out_dir, "dropvol"), slope=fits["slope"],
                   through_origin=fits["through_origin"],
                   excess_through_origin=fits["excess_through_origin"], intercept=fits["intercept"],
                   per_pore_volume={k: pore[k] for k in ("through_origin", "excess_through_origin",
                                                         "slope", "intercept")},
                   pearson=fits["pearson"], bursts=int(len(x)), intervals_over=fits["unit"],
-                  **beside_results(beside))
+                  **beside_results(beside), **across_pore_results(across))
